@@ -1,0 +1,60 @@
+# Two commands: `make run` and `make test`. Both install what is missing (Debian 12 packages through
+# apt-get, as root or with sudo), configure with CMake and build before doing their job.
+PRESET   ?= debug
+BUILD    := build
+BIN      := $(BUILD)/bin
+OUT      := out
+STAGES    = $(shell cat $(BUILD)/stages.txt 2>/dev/null)
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
+
+# Debian 12 packages the build, the tests and the headless renders need.
+PACKAGES := cmake ninja-build g++ pkg-config libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev xvfb xauth
+
+SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
+
+.PHONY: all deps configure build run test bless clean help
+
+all: build
+
+help:
+	@echo "make run    open the final stage in a window, or render every stage headless into $(OUT)/"
+	@echo "make test   build and run every test (ctest)"
+	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
+	@echo "make clean  remove $(BUILD)/ and $(OUT)/"
+
+deps:
+	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	    echo "Installing Debian packages:" $$missing; \
+	    $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+configure: deps
+	@[ -f $(BUILD)/build.ninja ] || cmake --preset $(PRESET)
+
+build: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+run: build
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+	    last=$$(tail -n 1 $(BUILD)/stages.txt); \
+	    echo "Opening $$last (Esc quits; WASD moves, right mouse button looks, scroll zooms)"; \
+	    $(BIN)/$$last; \
+	else \
+	    mkdir -p $(OUT); \
+	    echo "No display: rendering every stage headless into $(OUT)/"; \
+	    for stage in $(STAGES); do \
+	        $(BIN)/$$stage --headless --frames 1 --output $(OUT)/$$stage.png >/dev/null || exit 1; \
+	        echo "  $(OUT)/$$stage.png"; \
+	    done; \
+	fi
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bless: build
+	tests/golden/bless.sh $(BIN) $(if $(filter command line,$(origin STAGES)),$(STAGES),$(shell cat $(BUILD)/stages.txt))
+
+clean:
+	rm -rf $(BUILD) $(OUT)

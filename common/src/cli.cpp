@@ -1,0 +1,128 @@
+// Command-line parsing with CLI11: every option, its help text, and the checks that turn bad usage
+// into exit code 2 with a message naming the argument.
+#include "t10/cli.hpp"
+
+#include "t10/camera.hpp"
+#include "t10/error.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <sstream>
+
+namespace t10 {
+
+namespace {
+
+constexpr int kMaxSide = 16384;
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    if (text.size() < suffix.size()) return false;
+    std::string tail = text.substr(text.size() - suffix.size());
+    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tail == suffix;
+}
+
+std::string presetList() {
+    std::string names;
+    for (const CameraPreset& preset : cameraPresets()) {
+        names += names.empty() ? "" : ", ";
+        names += preset.name;
+    }
+    return names;
+}
+
+} // namespace
+
+std::pair<int, int> parseSize(const std::string& text, int minimumSide) {
+    const auto x = text.find_first_of("xX");
+    auto side = [&](const std::string& part) {
+        if (part.empty() || part.size() > 6 || part.find_first_not_of("0123456789") != std::string::npos) {
+            throw UsageError("size '" + text + "' is not WIDTHxHEIGHT (for example 1280x720)");
+        }
+        const int value = std::stoi(part);
+        if (value < minimumSide || value > kMaxSide) {
+            throw UsageError("size '" + text + "': each side must be from " + std::to_string(minimumSide) + " to " +
+                             std::to_string(kMaxSide));
+        }
+        return value;
+    };
+    if (x == std::string::npos) throw UsageError("size '" + text + "' is not WIDTHxHEIGHT (for example 1280x720)");
+    return {side(text.substr(0, x)), side(text.substr(x + 1))};
+}
+
+int parseCommandLine(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
+                     Options& options, const AddOptionsHook& addOptions) {
+    CLI::App app(summary, stageName);
+    app.set_version_flag("--version", stageName + " " T10_VERSION);
+    app.get_formatter()->column_width(34);
+
+    std::string backend = "auto";
+    std::string size;
+    std::string resizeSequence;
+    app.add_flag("--headless", options.headless, "Render without a window (the default when there is no display)");
+    app.add_option("--backend", backend, "auto | window | egl | osmesa (auto: a window when there is a display, "
+                                         "else EGL, else OSMesa)")
+        ->check(CLI::IsMember({"auto", "window", "egl", "osmesa"}));
+    app.add_option("--size", size, "Framebuffer size WIDTHxHEIGHT (default 1280x720)");
+    app.add_option("--frames", options.frames, "Render N frames, then exit (headless default 1; window: until closed)")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--output", options.output, "Write the final frame as an 8-bit PNG (exactly what the window shows)");
+    app.add_option("--exr", options.exr, "Write the HDR accumulation buffer as an OpenEXR file (RGBA half)");
+    app.add_option("--camera", options.camera, "Camera preset: " + presetList() + " (default: default)");
+    app.add_option("--shader-dir", options.shaderDir, "Look for shaders in DIR before the stage's own folder")
+        ->check(CLI::ExistingDirectory);
+    app.add_option("--input", options.input, "Post-process this HDR image (OpenEXR) instead of rendering the scene")
+        ->check(CLI::ExistingFile);
+    app.add_option("--dump", options.dumpDir, "After the last frame, write every level of the textures on units "
+                                              "15-17 as PFM files into DIR (for numeric checks)");
+    app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
+                                                        "minimised window; for tests)");
+    app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
+    if (addOptions) addOptions(app);
+
+    try {
+        app.parse(argc, argv);
+        options.backend = backend == "window" ? Backend::Window
+                        : backend == "egl"    ? Backend::Egl
+                        : backend == "osmesa" ? Backend::OsMesa
+                                              : Backend::Auto;
+        if (options.headless && options.backend == Backend::Window) {
+            throw UsageError("--headless contradicts --backend window");
+        }
+        if (!size.empty()) {
+            std::tie(options.width, options.height) = parseSize(size);
+            options.sizeGiven = true;
+        }
+        if (!options.output.empty() && !endsWith(options.output, ".png")) {
+            throw UsageError("--output " + options.output + ": the file name must end in .png");
+        }
+        if (!options.exr.empty() && !endsWith(options.exr, ".exr")) {
+            throw UsageError("--exr " + options.exr + ": the file name must end in .exr");
+        }
+        if (!findCameraPreset(options.camera)) {
+            throw UsageError("--camera " + options.camera + ": unknown preset (choose from " + presetList() + ")");
+        }
+        if (!resizeSequence.empty()) {
+            std::stringstream list(resizeSequence);
+            for (std::string item; std::getline(list, item, ',');) {
+                options.resizeSequence.push_back(parseSize(item, 0));
+            }
+        }
+    } catch (const CLI::CallForHelp&) {
+        std::cout << app.help();
+        return 0;
+    } catch (const CLI::CallForVersion&) {
+        std::cout << stageName << " " << T10_VERSION << "\n";
+        return 0;
+    } catch (const CLI::ParseError& error) {
+        std::cerr << stageName << ": error: " << error.what() << "\nRun with --help for the options.\n";
+        return 2;
+    } catch (const UsageError& error) {
+        std::cerr << stageName << ": error: " << error.what() << "\nRun with --help for the options.\n";
+        return 2;
+    }
+    return -1;
+}
+
+} // namespace t10

@@ -1,0 +1,95 @@
+// Shader manager: resolves GLSL files through the search folders, compiles, links, and turns any
+// failure into a t10::Error carrying the file name and the driver's log.
+#include "t10/shader.hpp"
+
+#include "t10/error.hpp"
+#include "t10/gl_object.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace t10 {
+
+namespace {
+
+GLenum stageFromExtension(const std::filesystem::path& file) {
+    const std::string ext = file.extension().string();
+    if (ext == ".vert") return GL_VERTEX_SHADER;
+    if (ext == ".frag") return GL_FRAGMENT_SHADER;
+    if (ext == ".geom") return GL_GEOMETRY_SHADER;
+    if (ext == ".comp") return GL_COMPUTE_SHADER;
+    if (ext == ".tesc") return GL_TESS_CONTROL_SHADER;
+    if (ext == ".tese") return GL_TESS_EVALUATION_SHADER;
+    throw Error(file.string() + ": unknown shader stage (use .vert .frag .geom .comp .tesc or .tese)");
+}
+
+std::string readText(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string() + ": cannot open shader file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::string shaderLog(GLuint shader) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    return log.c_str();
+}
+
+std::string programLog(GLuint program) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    return log.c_str();
+}
+
+} // namespace
+
+ShaderManager::ShaderManager(std::vector<std::filesystem::path> searchDirs) : dirs_(std::move(searchDirs)) {}
+
+std::filesystem::path ShaderManager::find(const std::string& fileName) const {
+    std::string tried;
+    for (const auto& dir : dirs_) {
+        const std::filesystem::path candidate = dir / fileName;
+        if (std::filesystem::is_regular_file(candidate)) return candidate;
+        tried += "\n  " + candidate.string();
+    }
+    throw Error(fileName + ": shader not found; looked for" + tried);
+}
+
+GLuint ShaderManager::createProgram(std::initializer_list<std::string> fileNames) const {
+    return createProgram(std::vector<std::string>(fileNames));
+}
+
+GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) const {
+    Program program(glCreateProgram());
+    std::vector<Shader> shaders;
+    std::string names;
+    for (const std::string& name : fileNames) {
+        const std::filesystem::path file = find(name);
+        const std::string source = readText(file);
+        Shader shader(glCreateShader(stageFromExtension(file)));
+        const char* text = source.c_str();
+        glShaderSource(shader.get(), 1, &text, nullptr);
+        glCompileShader(shader.get());
+        GLint ok = GL_FALSE;
+        glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
+        if (ok != GL_TRUE) throw Error(file.string() + ": shader compilation failed:\n" + shaderLog(shader.get()));
+        glAttachShader(program.get(), shader.get());
+        shaders.push_back(std::move(shader));
+        names += (names.empty() ? "" : " + ") + file.string();
+    }
+    glLinkProgram(program.get());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) throw Error(names + ": program link failed:\n" + programLog(program.get()));
+    for (const Shader& shader : shaders) glDetachShader(program.get(), shader.get());
+    return program.release();
+}
+
+} // namespace t10

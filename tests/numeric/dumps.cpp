@@ -1,0 +1,58 @@
+// Loading the numeric-test dumps and measuring 8-bit differences; see dumps.hpp.
+#include "dumps.hpp"
+
+#include "t10/error.hpp"
+#include "t10/image_io.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace t10::test {
+
+ImageF Dump::level(int unit, int levelIndex) const {
+    const std::string file = path("unit" + std::to_string(unit) + "_level" + std::to_string(levelIndex) + ".pfm");
+    if (!std::filesystem::exists(file)) throw Error(file + ": not written by the stage (is the texture bound to unit " + std::to_string(unit) + "?)");
+    return readPfm(file);
+}
+
+int Dump::levelCount(int unit) const {
+    int count = 0;
+    while (std::filesystem::exists(path("unit" + std::to_string(unit) + "_level" + std::to_string(count) + ".pfm"))) ++count;
+    return count;
+}
+
+Dump loadDump(const std::string& name) {
+    const char* root = std::getenv("T10_DUMP_DIR");
+    if (root == nullptr || *root == '\0') throw Error("T10_DUMP_DIR is not set: run these tests through ctest");
+    Dump dump;
+    dump.dir = std::string(root) + "/" + name;
+    dump.accumulation = readPfm(dump.path("unit15_level0.pfm"));
+    dump.frame = readPng(dump.path("frame.png"));
+    return dump;
+}
+
+ByteError byteError(const Image8& a, const Image8& b) {
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
+        throw Error("byteError: images differ in size");
+    }
+    ByteError error;
+    double sum = 0.0;
+    std::size_t overOne = 0;
+    const std::size_t pixels = static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        int worst = 0;
+        for (int c = 0; c < a.channels; ++c) {
+            const std::size_t i = p * static_cast<std::size_t>(a.channels) + static_cast<std::size_t>(c);
+            const int d = std::abs(int(a.data[i]) - int(b.data[i]));
+            worst = std::max(worst, d);
+            sum += d;
+        }
+        error.max = std::max(error.max, worst);
+        if (worst > 1) ++overOne;
+    }
+    error.mean = sum / double(pixels * static_cast<std::size_t>(a.channels));
+    error.fractionOverOne = double(overOne) / double(pixels);
+    return error;
+}
+
+} // namespace t10::test

@@ -1,0 +1,32 @@
+// Access to the buffers a stage wrote with --dump/--output for the numeric tests. The ctest
+// fixtures render them first; T10_DUMP_DIR points at their folder.
+#pragma once
+#include "t10/image.hpp"
+
+#include <string>
+
+namespace t10::test {
+
+struct Dump {
+    std::string dir;
+    ImageF accumulation;   // unit 15, level 0 (RGB)
+    Image8 frame;          // the final frame (--output)
+    std::string path(const std::string& file) const { return dir + "/" + file; }
+    // Level `level` of the texture that was on `unit`; throws t10::Error if the stage did not write it.
+    ImageF level(int unit, int level) const;
+    // Number of levels written for `unit`.
+    int levelCount(int unit) const;
+};
+
+// Loads T10_DUMP_DIR/<name>; throws t10::Error naming what is missing.
+Dump loadDump(const std::string& name);
+
+// Max and mean absolute difference between two 8-bit RGB images of the same size, in 8-bit steps.
+struct ByteError {
+    int max = 0;
+    double mean = 0.0;
+    double fractionOverOne = 0.0; // pixels with some channel off by more than one step
+};
+ByteError byteError(const Image8& a, const Image8& b);
+
+} // namespace t10::test

@@ -1,0 +1,143 @@
+// Implementation of the CPU reference; see reference.hpp. Everything is double precision and
+// follows the tutorial's formulas directly, not the shaders' code.
+#include "reference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace t10::ref {
+
+double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
+
+double rangeMappedLogLuminance(double y) {
+    return (std::log(y + kEpsilon) - std::log(kEpsilon)) / (std::log(kYwhite) - std::log(kEpsilon));
+}
+
+double keyFromMapped(double mapped) {
+    return std::exp(mapped * (std::log(kYwhite) - std::log(kEpsilon)) + std::log(kEpsilon));
+}
+
+double toUnorm16(double v) { return std::round(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0; }
+
+double meanMappedLogLuminance(const ImageF& accumulation, bool asR16) {
+    double sum = 0.0;
+    for (int y = 0; y < accumulation.height; ++y) {
+        for (int x = 0; x < accumulation.width; ++x) {
+            const Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
+            const double mapped = rangeMappedLogLuminance(luminance(c));
+            sum += asR16 ? toUnorm16(mapped) : mapped;
+        }
+    }
+    return sum / (double(accumulation.width) * double(accumulation.height));
+}
+
+Rgb toneMap(const Rgb& colour, double sceneKey) {
+    const double y = luminance(colour);
+    if (y <= 0.0) return {0.0, 0.0, 0.0};
+    const double middleGrey = 1.03 - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
+    const double relative = middleGrey * y / sceneKey;
+    const double mapped = relative * (1.0 + relative / (kYwhite * kYwhite)) / (1.0 + relative);
+    return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
+}
+
+std::uint8_t toUnorm8(double v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+double sampleBilinear(const ImageF& image, int c, double u, double v) {
+    // Texel centres sit at (i + 0.5) / size, as in GL.
+    const double x = u * image.width - 0.5;
+    const double y = v * image.height - 0.5;
+    const double fx = std::floor(x);
+    const double fy = std::floor(y);
+    const double ax = x - fx;
+    const double ay = y - fy;
+    auto texel = [&](double tx, double ty) {
+        const int ix = std::clamp(static_cast<int>(tx), 0, image.width - 1);
+        const int iy = std::clamp(static_cast<int>(ty), 0, image.height - 1);
+        return double(image.at(ix, iy, c));
+    };
+    return (1 - ax) * (1 - ay) * texel(fx, fy) + ax * (1 - ay) * texel(fx + 1, fy) +
+           (1 - ax) * ay * texel(fx, fy + 1) + ax * ay * texel(fx + 1, fy + 1);
+}
+
+Rgb sampleBilinear(const ImageF& image, double u, double v) {
+    return {sampleBilinear(image, 0, u, v), sampleBilinear(image, 1, u, v), sampleBilinear(image, 2, u, v)};
+}
+
+ImageF bloomThreshold(const ImageF& accumulation, double threshold) {
+    ImageF bloom(accumulation.width, accumulation.height, 3);
+    for (int y = 0; y < accumulation.height; ++y) {
+        for (int x = 0; x < accumulation.width; ++x) {
+            const Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
+            const bool bright = luminance(c) >= threshold;
+            for (int k = 0; k < 3; ++k) bloom.at(x, y, k) = bright ? static_cast<float>(c[k]) : 0.0f;
+        }
+    }
+    return bloom;
+}
+
+ImageF boxDownsample(const ImageF& level0) {
+    ImageF level1(std::max(1, level0.width / 2), std::max(1, level0.height / 2), level0.channels);
+    for (int y = 0; y < level1.height; ++y) {
+        for (int x = 0; x < level1.width; ++x) {
+            for (int c = 0; c < level0.channels; ++c) {
+                double sum = 0.0;
+                for (int dy = 0; dy < 2; ++dy)
+                    for (int dx = 0; dx < 2; ++dx)
+                        sum += level0.at(std::min(2 * x + dx, level0.width - 1), std::min(2 * y + dy, level0.height - 1), c);
+                level1.at(x, y, c) = static_cast<float>(sum / 4.0);
+            }
+        }
+    }
+    return level1;
+}
+
+ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal) {
+    ImageF out(dstWidth, dstHeight, 3);
+    const double step1 = kTap1 * kSigma / (horizontal ? dstWidth : dstHeight);
+    const double step2 = kTap2 * kSigma / (horizontal ? dstWidth : dstHeight);
+    const double offsets[5] = {-step2, -step1, 0.0, step1, step2};
+    for (int y = 0; y < dstHeight; ++y) {
+        for (int x = 0; x < dstWidth; ++x) {
+            const double u = (x + 0.5) / dstWidth;
+            const double v = (y + 0.5) / dstHeight;
+            Rgb sum{0.0, 0.0, 0.0};
+            for (double offset : offsets) {
+                const Rgb s = horizontal ? sampleBilinear(source, u + offset, v) : sampleBilinear(source, u, v + offset);
+                for (int c = 0; c < 3; ++c) sum[c] += s[c];
+            }
+            for (int c = 0; c < 3; ++c) out.at(x, y, c) = static_cast<float>(sum[c] / 5.0);
+        }
+    }
+    return out;
+}
+
+ImageF gaussianBloom(const ImageF& level0, int passes) {
+    const int halfWidth = std::max(1, level0.width / 2);
+    const int halfHeight = std::max(1, level0.height / 2);
+    ImageF level1 = level0;
+    for (int pass = 0; pass < passes; ++pass) {
+        const ImageF blur = gaussianPass(level1, halfWidth, halfHeight, true);
+        level1 = gaussianPass(blur, halfWidth, halfHeight, false);
+    }
+    return level1;
+}
+
+Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, double bloomWeight) {
+    Image8 frame(accumulation.width, accumulation.height, 3);
+    for (int y = 0; y < accumulation.height; ++y) {
+        for (int x = 0; x < accumulation.width; ++x) {
+            Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
+            if (bloomLevel != nullptr) {
+                const Rgb b = sampleBilinear(*bloomLevel, (x + 0.5) / accumulation.width, (y + 0.5) / accumulation.height);
+                for (int k = 0; k < 3; ++k) c[k] += bloomWeight * b[k];
+            }
+            const Rgb mapped = toneMap(c, sceneKey);
+            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = toUnorm8(mapped[k]);
+        }
+    }
+    return frame;
+}
+
+} // namespace t10::ref

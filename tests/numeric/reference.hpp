@@ -1,0 +1,58 @@
+// CPU reference of Tutorial 10's post-processing chain in double precision: luminance, the range
+// mapped log luminance and scene key, the tone map operator, the bloom threshold, the 2x2
+// downsample and the five-tap importance-sampled Gaussian passes. The numeric tests run it on
+// buffers read back from the GPU and compare.
+#pragma once
+#include "t10/image.hpp"
+
+#include <array>
+#include <cstdint>
+
+namespace t10::ref {
+
+constexpr double kEpsilon = 1e-8;
+constexpr double kYwhite = 0.22;
+constexpr double kBloomThreshold = 2.95 * kYwhite;
+constexpr double kBloomWeight = 0.98;
+constexpr double kSigma = 2.5;
+constexpr double kTap1 = 0.524; // inner taps at +-0.524 sigma
+constexpr double kTap2 = 1.282; // outer taps at +-1.282 sigma
+constexpr int kBlurPasses = 5;
+
+using Rgb = std::array<double, 3>;
+
+double luminance(const Rgb& c);
+// (log(Y + eps) - log(eps)) / (log(Yw) - log(eps)), not clamped.
+double rangeMappedLogLuminance(double y);
+// Inverse of the range mapping followed by exp: the key Ya from a mapped value.
+double keyFromMapped(double mapped);
+// Stores v into a GL_R16 texel: clamp to [0, 1], round to the nearest 1/65535.
+double toUnorm16(double v);
+// Mean of the range-mapped log luminance of every pixel; with `asR16`, each value is clamped and
+// quantised as the GL_R16 luminance texture stores it (so pixels above Yw saturate at 1).
+double meanMappedLogLuminance(const ImageF& accumulation, bool asR16);
+// The tone map of steps 8-9 for a linear HDR colour and the key Ya (black stays black).
+Rgb toneMap(const Rgb& colour, double sceneKey);
+// How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
+std::uint8_t toUnorm8(double v);
+
+// Bilinear sample of channel c at texture coordinate (u, v) in [0, 1] with clamp-to-edge.
+double sampleBilinear(const ImageF& image, int c, double u, double v);
+Rgb sampleBilinear(const ImageF& image, double u, double v);
+
+// Step 18: the accumulation colour where its luminance reaches the threshold, else black.
+ImageF bloomThreshold(const ImageF& accumulation, double threshold = kBloomThreshold);
+// The next mipmap level by 2x2 averaging (sizes floor(n / 2), at least 1); exact for even sizes.
+ImageF boxDownsample(const ImageF& level0);
+// One Gaussian pass (steps 27, 32-34): each output pixel of a dstWidth x dstHeight target averages
+// five bilinear samples of `source` at its centre and +-kTap1, +-kTap2 sigma target texels along one axis.
+ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal);
+// The whole Part 3 blur: `passes` horizontal + vertical pairs at half resolution from bloom level 0.
+ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses);
+
+// The final frame: optionally add weight x bloom (bilinear from the given level) to each
+// accumulation texel, tone map with Ya, convert to 8 bits.
+Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel = nullptr,
+                  double bloomWeight = kBloomWeight);
+
+} // namespace t10::ref

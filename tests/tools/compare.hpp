@@ -1,0 +1,38 @@
+// Golden-image comparison: the tolerance model (per-channel threshold, fraction of failing pixels,
+// mean error), its file format, and the difference heat-map written on failure.
+#pragma once
+#include "t10/image.hpp"
+
+#include <string>
+
+namespace t10::test {
+
+struct Tolerance {
+    int threshold = 0;        // a pixel fails when any channel differs by more than this (8-bit steps)
+    double maxFraction = 0.0; // largest allowed fraction of failing pixels
+    double maxMean = 0.0;     // largest allowed mean absolute difference over all channels (8-bit steps)
+};
+
+struct Comparison {
+    bool sizeMatches = false;
+    double failingFraction = 0.0;
+    double meanError = 0.0;
+    int maxError = 0;
+    bool passed = false;
+    std::string summary; // one line with the measured figures against the bounds
+};
+
+// Reads "threshold = 8   # reason" style lines; each of the three keys must be present, and each
+// must carry a reason after '#'. Throws t10::Error naming the file and line otherwise.
+Tolerance readTolerance(const std::string& path);
+
+Comparison compareImages(const Image8& expected, const Image8& actual, const Tolerance& tolerance);
+
+// Per-pixel largest channel difference, scaled x4 and coloured black -> red -> yellow -> white.
+Image8 differenceHeatMap(const Image8& expected, const Image8& actual);
+
+// A deterministic, clearly visible alteration (a block covering 1/16 of the image, inverted), used to
+// prove that a tolerance is not blind.
+Image8 visiblyAltered(const Image8& image);
+
+} // namespace t10::test

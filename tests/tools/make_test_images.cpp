@@ -1,0 +1,62 @@
+// make_test_images: writes the synthetic HDR inputs the numeric tests post-process with --input:
+//   hot.exr  128x128 grey 0.05 with one 2x2 block of 20.0 centred on a texel of the half-size grid
+//   dim.exr  128x128 smooth gradient whose luminance stays below the bloom threshold (2.95 x 0.22)
+// usage: make_test_images OUT_DIR
+#include "t10/error.hpp"
+#include "t10/image_io.hpp"
+
+#include <filesystem>
+#include <iostream>
+
+namespace {
+
+constexpr int kSize = 128;
+constexpr float kBackground = 0.05f;
+constexpr float kHot = 20.0f;
+constexpr int kHotX = 64; // the block covers 64..65: exactly texel 32 of the half-size grid
+constexpr int kHotY = 64;
+
+t10::ImageF hotPixel() {
+    t10::ImageF image(kSize, kSize, 4);
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x)
+            for (int c = 0; c < 4; ++c) image.at(x, y, c) = c == 3 ? 1.0f : kBackground;
+    for (int y = kHotY; y < kHotY + 2; ++y)
+        for (int x = kHotX; x < kHotX + 2; ++x)
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = kHot;
+    return image;
+}
+
+t10::ImageF dimGradient() {
+    t10::ImageF image(kSize, kSize, 4);
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            // Luminance peaks near 0.5, below the 0.649 threshold.
+            image.at(x, y, 0) = 0.5f * float(x) / float(kSize - 1) + 0.01f;
+            image.at(x, y, 1) = 0.45f * float(y) / float(kSize - 1) + 0.01f;
+            image.at(x, y, 2) = 0.3f * float(x + y) / float(2 * kSize - 2) + 0.01f;
+            image.at(x, y, 3) = 1.0f;
+        }
+    }
+    return image;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::cerr << "usage: make_test_images OUT_DIR\n";
+        return 2;
+    }
+    try {
+        std::filesystem::create_directories(argv[1]);
+        const std::string dir = argv[1];
+        t10::writeExr(dir + "/hot.exr", hotPixel());
+        t10::writeExr(dir + "/dim.exr", dimGradient());
+        std::cout << "wrote " << dir << "/hot.exr and " << dir << "/dim.exr\n";
+        return 0;
+    } catch (const t10::Error& error) {
+        std::cerr << "make_test_images: error: " << error.what() << "\n";
+        return 1;
+    }
+}

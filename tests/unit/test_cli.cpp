@@ -1,0 +1,70 @@
+// Command-line parsing: sizes, defaults, and the exit codes for help, version and bad usage.
+#include "t10/cli.hpp"
+#include "t10/error.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+namespace {
+
+int parse(std::vector<const char*> args, t10::Options& options) {
+    args.insert(args.begin(), "stage");
+    return t10::parseCommandLine(static_cast<int>(args.size()), args.data(), "stage", "test stage", options);
+}
+
+} // namespace
+
+TEST_CASE("parseSize accepts WIDTHxHEIGHT within the limits", "[cli]") {
+    CHECK(t10::parseSize("1280x720") == std::pair<int, int>(1280, 720));
+    CHECK(t10::parseSize("1X1") == std::pair<int, int>(1, 1));
+    CHECK(t10::parseSize("16384x16384") == std::pair<int, int>(16384, 16384));
+    CHECK(t10::parseSize("0x0", 0) == std::pair<int, int>(0, 0));
+}
+
+TEST_CASE("parseSize rejects malformed and out-of-range sizes", "[cli]") {
+    for (const char* bad : {"", "x", "12", "12x", "x12", "-1x5", "1.5x2", "16385x1", "0x10", "1x0", "99999999x1"}) {
+        INFO(bad);
+        CHECK_THROWS_AS(t10::parseSize(bad), t10::UsageError);
+    }
+}
+
+TEST_CASE("defaults: auto backend, 1280x720, default camera", "[cli]") {
+    t10::Options options;
+    REQUIRE(parse({}, options) == -1);
+    CHECK(options.backend == t10::Backend::Auto);
+    CHECK(options.width == 1280);
+    CHECK(options.height == 720);
+    CHECK(options.camera == "default");
+    CHECK(options.frames == 0);
+    CHECK_FALSE(options.headless);
+}
+
+TEST_CASE("options are parsed into Options", "[cli]") {
+    t10::Options options;
+    REQUIRE(parse({"--headless", "--backend", "osmesa", "--size", "320x200", "--frames", "3", "--output", "a.png",
+                   "--exr", "a.exr", "--resize-sequence", "10x10,0x0,20x30"},
+                  options) == -1);
+    CHECK(options.headless);
+    CHECK(options.backend == t10::Backend::OsMesa);
+    CHECK(options.width == 320);
+    CHECK(options.height == 200);
+    CHECK(options.sizeGiven);
+    CHECK(options.frames == 3);
+    CHECK(options.output == "a.png");
+    CHECK(options.exr == "a.exr");
+    REQUIRE(options.resizeSequence.size() == 3);
+    CHECK(options.resizeSequence[1] == std::pair<int, int>(0, 0));
+}
+
+TEST_CASE("help and version exit 0, bad usage exits 2", "[cli]") {
+    t10::Options options;
+    CHECK(parse({"--help"}, options) == 0);
+    CHECK(parse({"--version"}, options) == 0);
+    CHECK(parse({"--frames", "0"}, options) == 2);
+    CHECK(parse({"--size", "10"}, options) == 2);
+    CHECK(parse({"--camera", "nowhere"}, options) == 2);
+    CHECK(parse({"--output", "x.bmp"}, options) == 2);
+    CHECK(parse({"--headless", "--backend", "window"}, options) == 2);
+    CHECK(parse({"stray"}, options) == 2);
+}
