@@ -48,6 +48,7 @@ struct App::DebugState {
     std::vector<std::string> errors;
 };
 
+#ifdef T10_GL_DEBUG
 namespace {
 
 void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
@@ -65,6 +66,7 @@ void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum seve
 }
 
 } // namespace
+#endif
 
 App::App(const Stage& stage, const Options& options, Context& context)
     : stage_(stage), options_(options), context_(context),
