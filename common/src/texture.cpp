@@ -1,0 +1,84 @@
+// Uploads 8-bit images as immutable, fully mip-mapped, trilinear, repeating 2D textures.
+#include "t10/texture.hpp"
+
+#include "t10/error.hpp"
+#include "t10/tga.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace t10 {
+
+namespace {
+
+// The full chain down to 1x1: floor(log2(max(w, h))) + 1. (The tutorial's ceil(log2(...)) is one
+// level short for power-of-two sizes.)
+GLsizei mipLevelCount(int width, int height) {
+    int side = std::max(width, height);
+    GLsizei levels = 1;
+    while (side > 1) {
+        side >>= 1;
+        ++levels;
+    }
+    return levels;
+}
+
+struct Formats {
+    GLenum internalFormat;
+    GLenum format;
+};
+
+Formats formatsFor(int channels, bool srgb) {
+    switch (channels) {
+    case 1: return {GL_R8, GL_RED}; // grey data (heights, masks) is never sRGB
+    case 3: return {srgb ? GLenum(GL_SRGB8) : GLenum(GL_RGB8), GL_RGB};
+    case 4: return {srgb ? GLenum(GL_SRGB8_ALPHA8) : GLenum(GL_RGBA8), GL_RGBA};
+    default: throw Error("uploadTexture: unsupported channel count " + std::to_string(channels));
+    }
+}
+
+} // namespace
+
+Texture uploadTexture(const Image8& image, bool srgb) {
+    if (image.width < 1 || image.height < 1 || image.empty())
+        throw Error("uploadTexture: empty image");
+    const Formats f = formatsFor(image.channels, srgb);
+
+    // Restore whatever the active unit held afterwards (it may be unit 15, the accumulation texture).
+    GLint previousBinding = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previousBinding);
+
+    Texture texture = makeTexture();
+    glBindTexture(GL_TEXTURE_2D, texture.get());
+    glTexStorage2D(GL_TEXTURE_2D, mipLevelCount(image.width, image.height), f.internalFormat,
+                   image.width, image.height);
+
+    // Rows of 1- and 3-channel images are tightly packed, not 4-byte aligned.
+    GLint previousAlignment = 4;
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &previousAlignment);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, f.format, GL_UNSIGNED_BYTE,
+                    image.data.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, previousAlignment);
+
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    if (image.channels == 1) {
+        // Sampling a grey texture gives (g, g, g, 1), not (g, 0, 0, 1).
+        const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+        glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+    }
+    glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(previousBinding));
+    return texture;
+}
+
+Texture loadTextureTga(const std::string& path, bool srgb) {
+    TgaResult result = loadTga(path);
+    if (!result.ok()) throw Error(result.error);
+    return uploadTexture(result.image, srgb);
+}
+
+} // namespace t10
