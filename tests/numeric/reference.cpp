@@ -44,6 +44,39 @@ std::uint8_t toUnorm8(double v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
+double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode) {
+    if (mode == FloatStore::Exact) return v;
+    if (!(v > 0.0)) return 0.0; // negative values and NaN have no unsigned-float encoding
+    constexpr int kMinExponent = -14; // exponent bias 15: below 2^-14 the format is denormal
+    const double largest = (2.0 - std::ldexp(1.0, -mantissaBits)) * std::ldexp(1.0, 15);
+    if (v >= largest) return largest;
+    const int exponent = std::max(static_cast<int>(std::floor(std::log2(v))), kMinExponent);
+    const double step = std::ldexp(1.0, exponent - mantissaBits);
+    const double steps = v / step;
+    return (mode == FloatStore::Truncate ? std::floor(steps) : std::nearbyint(steps)) * step;
+}
+
+void storeR11G11B10F(ImageF& image, FloatStore mode) {
+    constexpr int kMantissa[3] = {6, 6, 5};
+    for (std::size_t i = 0; i < image.data.size(); ++i) {
+        const int c = static_cast<int>(i % static_cast<std::size_t>(image.channels));
+        if (c < 3) image.data[i] = static_cast<float>(storeUnsignedFloat(image.data[i], kMantissa[c], mode));
+    }
+}
+
+FloatStore detectFloatStore(const ImageF& stored, const ImageF& exact) {
+    // Rounding puts values up to half a step (2^-7 of the value) above the exact one; a value above
+    // by less than 2^-12 is sampling noise (texture coordinates a hair off a texel centre). Texels
+    // that are zero on one side only are pixels at the threshold, classified differently by float
+    // and double arithmetic: they say nothing about the store rule.
+    for (std::size_t i = 0; i < stored.data.size() && i < exact.data.size(); ++i) {
+        if (exact.data[i] > 0.0f && stored.data[i] > exact.data[i] * (1.0 + 1.0 / 4096.0)) {
+            return FloatStore::RoundToNearest;
+        }
+    }
+    return FloatStore::Truncate;
+}
+
 double sampleBilinear(const ImageF& image, int c, double u, double v) {
     // Texel centres sit at (i + 0.5) / size, as in GL.
     const double x = u * image.width - 0.5;
@@ -113,13 +146,15 @@ ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool hori
     return out;
 }
 
-ImageF gaussianBloom(const ImageF& level0, int passes) {
+ImageF gaussianBloom(const ImageF& level0, int passes, FloatStore store) {
     const int halfWidth = std::max(1, level0.width / 2);
     const int halfHeight = std::max(1, level0.height / 2);
     ImageF level1 = level0;
     for (int pass = 0; pass < passes; ++pass) {
-        const ImageF blur = gaussianPass(level1, halfWidth, halfHeight, true);
+        ImageF blur = gaussianPass(level1, halfWidth, halfHeight, true);
+        storeR11G11B10F(blur, store);
         level1 = gaussianPass(blur, halfWidth, halfHeight, false);
+        storeR11G11B10F(level1, store);
     }
     return level1;
 }

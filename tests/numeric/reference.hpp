@@ -36,6 +36,16 @@ Rgb toneMap(const Rgb& colour, double sceneKey);
 // How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
 std::uint8_t toUnorm8(double v);
 
+// How a float is stored in GL_R11F_G11F_B10F: unsigned floats with 5 exponent bits and 6 (red,
+// green) or 5 (blue) mantissa bits. GL leaves the rounding to the implementation; Mesa truncates.
+enum class FloatStore { Exact, Truncate, RoundToNearest };
+double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode);
+// Applies storeUnsignedFloat to every texel with the R11G11B10F mantissa widths.
+void storeR11G11B10F(ImageF& image, FloatStore mode);
+// Which rule a driver used, judged from a texture it wrote and the exact values it was given:
+// Truncate if no stored value lies clearly above its exact value, RoundToNearest otherwise.
+FloatStore detectFloatStore(const ImageF& stored, const ImageF& exact);
+
 // Bilinear sample of channel c at texture coordinate (u, v) in [0, 1] with clamp-to-edge.
 double sampleBilinear(const ImageF& image, int c, double u, double v);
 Rgb sampleBilinear(const ImageF& image, double u, double v);
@@ -47,8 +57,9 @@ ImageF boxDownsample(const ImageF& level0);
 // One Gaussian pass (steps 27, 32-34): each output pixel of a dstWidth x dstHeight target averages
 // five bilinear samples of `source` at its centre and +-kTap1, +-kTap2 sigma target texels along one axis.
 ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal);
-// The whole Part 3 blur: `passes` horizontal + vertical pairs at half resolution from bloom level 0.
-ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses);
+// The whole Part 3 blur: `passes` horizontal + vertical pairs at half resolution from bloom level 0,
+// each pass's result stored as the R11G11B10F targets store it.
+ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses, FloatStore store = FloatStore::Exact);
 
 // The final frame: optionally add weight x bloom (bilinear from the given level) to each
 // accumulation texel, tone map with Ya, convert to 8 bits.
