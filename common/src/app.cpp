@@ -126,6 +126,9 @@ void App::resize(int width, int height) {
         stage_.quit();
         stageReady_ = false;
     }
+    // A window manager may ignore the size limits: anything below 2x2 is treated like a minimised
+    // window (nothing is rendered until it grows again).
+    if (width < kMinFramebufferSide || height < kMinFramebufferSide) width = height = 0;
     width_ = width;
     height_ = height;
     if (width == 0 || height == 0) return; // minimised: nothing to render until it comes back

@@ -56,6 +56,8 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
     CLI::App app(summary, stageName);
     app.set_version_flag("--version", stageName + " " T10_VERSION);
     app.get_formatter()->column_width(34);
+    // A repeated option takes its last value, so a script can append to a fixed set of arguments.
+    app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
 
     std::string backend = "auto";
     std::string size;
@@ -106,7 +108,9 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         if (!resizeSequence.empty()) {
             std::stringstream list(resizeSequence);
             for (std::string item; std::getline(list, item, ',');) {
-                options.resizeSequence.push_back(parseSize(item, 0));
+                // 0x0 stands for a minimised window; anything else must be a real size.
+                const auto next = item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item);
+                options.resizeSequence.push_back(next);
             }
         }
     } catch (const CLI::CallForHelp&) {

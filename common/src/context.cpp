@@ -3,6 +3,8 @@
 // get-proc-address function.
 #include "t10/context.hpp"
 
+#include "t10/cli.hpp"
+
 #include "t10/error.hpp"
 #include "t10/gl.hpp"
 
@@ -73,6 +75,7 @@ public:
             glfwTerminate();
             throw Error("window: could not create a window with an OpenGL 4.3 core context");
         }
+        glfwSetWindowSizeLimits(window_, kMinFramebufferSide, kMinFramebufferSide, GLFW_DONT_CARE, GLFW_DONT_CARE);
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(1);
         loadGl(glfwGetProcAddress, "window");

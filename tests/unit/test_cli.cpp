@@ -17,13 +17,14 @@ int parse(std::vector<const char*> args, t10::Options& options) {
 
 TEST_CASE("parseSize accepts WIDTHxHEIGHT within the limits", "[cli]") {
     CHECK(t10::parseSize("1280x720") == std::pair<int, int>(1280, 720));
-    CHECK(t10::parseSize("1X1") == std::pair<int, int>(1, 1));
+    CHECK(t10::parseSize("2X2") == std::pair<int, int>(2, 2));
+    CHECK(t10::parseSize("1x1", 1) == std::pair<int, int>(1, 1));
     CHECK(t10::parseSize("16384x16384") == std::pair<int, int>(16384, 16384));
     CHECK(t10::parseSize("0x0", 0) == std::pair<int, int>(0, 0));
 }
 
 TEST_CASE("parseSize rejects malformed and out-of-range sizes", "[cli]") {
-    for (const char* bad : {"", "x", "12", "12x", "x12", "-1x5", "1.5x2", "16385x1", "0x10", "1x0", "99999999x1"}) {
+    for (const char* bad : {"", "x", "12", "12x", "x12", "-1x5", "1.5x2", "16385x2", "0x10", "2x0", "1x1", "1x2", "99999999x2"}) {
         INFO(bad);
         CHECK_THROWS_AS(t10::parseSize(bad), t10::UsageError);
     }
@@ -67,4 +68,12 @@ TEST_CASE("help and version exit 0, bad usage exits 2", "[cli]") {
     CHECK(parse({"--output", "x.bmp"}, options) == 2);
     CHECK(parse({"--headless", "--backend", "window"}, options) == 2);
     CHECK(parse({"stray"}, options) == 2);
+}
+
+TEST_CASE("a repeated option takes its last value", "[cli]") {
+    t10::Options options;
+    REQUIRE(parse({"--backend", "egl", "--size", "64x64", "--backend", "osmesa", "--size", "32x16"}, options) == -1);
+    CHECK(options.backend == t10::Backend::OsMesa);
+    CHECK(options.width == 32);
+    CHECK(options.height == 16);
 }

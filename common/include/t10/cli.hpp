@@ -39,7 +39,11 @@ using AddOptionsHook = std::function<void(CLI::App&)>;
 int parseCommandLine(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
                      Options& options, const AddOptionsHook& addOptions = {});
 
+// The smallest framebuffer side: Part 2's bloom texture has two mipmap levels, and a 1x1 texture
+// can only have one.
+constexpr int kMinFramebufferSide = 2;
+
 // "640x360" -> (640, 360); throws t10::UsageError for anything else or sides outside [lo, 16384].
-std::pair<int, int> parseSize(const std::string& text, int minimumSide = 1);
+std::pair<int, int> parseSize(const std::string& text, int minimumSide = kMinFramebufferSide);
 
 } // namespace t10
