@@ -8,7 +8,7 @@ STAGES    = $(shell cat $(BUILD)/stages.txt 2>/dev/null)
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build, the tests and the headless renders need.
-PACKAGES := cmake ninja-build g++ pkg-config libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
+PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
             libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev xvfb xauth
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)

@@ -32,6 +32,24 @@ foreach(stage IN LISTS T10_STAGES)
     set(previous ${stage})
 endforeach()
 
+# --- The stage rule: each stage's diff from the previous one holds exactly its part's steps. ---
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(STAGE_DIFF ${CMAKE_CURRENT_SOURCE_DIR}/stage_diff.py)
+set(previous "")
+foreach(stage IN LISTS T10_STAGES)
+    get_property(steps GLOBAL PROPERTY T10_STEPS_OF_${stage})
+    if(previous AND steps)
+        add_test(NAME "stage diff: ${previous} -> ${stage} holds only steps ${steps}"
+                 COMMAND ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${previous}
+                         ${PROJECT_SOURCE_DIR}/${stage} ${steps})
+    endif()
+    set(previous ${stage})
+endforeach()
+# The check can fail: Part 2 measured against Part 1's step range holds steps 17-25 too many.
+add_test(NAME "stage diff: rejects steps of another part"
+         COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+                 ${PROJECT_SOURCE_DIR}/tutorial10_part0_start ${PROJECT_SOURCE_DIR}/tutorial10_part2_bloom 1 16)
+
 # --- The command line (parsed by common/, so one stage is enough). ----------------------------
 set(S0 tutorial10_part0_start)
 foreach(case

@@ -2,14 +2,13 @@
 // integer (GL_R16) texture can hold it and glGenerateMipmap can average it into the scene key.
 #version 430 core
 
-// [step 2] Inputs and the luminance output
+// [step 2] The luminance shader: inputs, the luminance output and main()
 layout(binding = 7) uniform InvResolution {
     vec2 v2InvResolution;
 };
 layout(binding = 15) uniform sampler2D s2AccumulationTexture;
 
 layout(location = 0) out float fYOut;
-// [/step 2]
 
 void main() {
     // [step 3] Luminance (CIE Y) of the linear sRGB accumulation colour
@@ -38,3 +37,4 @@ void main() {
     fYOut = fYoutTemp;
     // [/step 5]
 }
+// [/step 2]

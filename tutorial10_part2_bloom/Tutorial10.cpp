@@ -9,8 +9,6 @@
 
 #include <glm/glm.hpp>
 
-#include <cmath>
-
 using namespace glm;
 
 // Window size (updated by common/ before every GL_Init, including after a resize)

@@ -3,14 +3,13 @@
 // and the pixels bright enough to bloom.
 #version 430 core
 
-// [step 2] Inputs and the luminance output
+// [step 2] The luminance shader: inputs, the luminance output and main()
 layout(binding = 7) uniform InvResolution {
     vec2 v2InvResolution;
 };
 layout(binding = 15) uniform sampler2D s2AccumulationTexture;
 
 layout(location = 0) out float fYOut;
-// [/step 2]
 // [step 17] The bloom output
 layout(location = 1) out vec3 v3YBloomOut;
 // [/step 17]
@@ -47,3 +46,4 @@ void main() {
     v3YBloomOut = (fY >= fYwhite * 2.95f)? v3AccumColour : vec3(0.0f);
     // [/step 18]
 }
+// [/step 2]

@@ -9,8 +9,6 @@
 
 #include <glm/glm.hpp>
 
-#include <cmath>
-
 using namespace glm;
 
 // Window size (updated by common/ before every GL_Init, including after a resize)
@@ -169,15 +167,15 @@ void GL_RenderPostProcess()
     glGenerateMipmap(GL_TEXTURE_2D);
     // [/step 15]
 
-    // [step 24] Bind texture on unit 17 (its mipmap is no longer generated: step 31)
+    // [step 24] Bind texture and generate mipmaps on bloom texture
     glActiveTexture(GL_TEXTURE17);
     glBindTexture(GL_TEXTURE_2D, g_uiBloom);
-    // [/step 24]
-
-    // [step 31] Only level 0 (written by the luminance pass) may be read until the blur writes level 1
+    // [step 31] Instead of generating level 1, clamp reads to level 0 (written by the luminance
+    // pass) until the blur has written level 1
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     // [/step 31]
+    // [/step 24]
 
     // [step 32] Blur passes at half resolution; first horizontally from bloom level 0 into g_uiBlur
     // Half viewport (matching level 1 of the bloom texture, see GL_Init)
