@@ -23,8 +23,9 @@ t10::Context& context() {
     return *instance;
 }
 
-std::filesystem::path scratch() {
-    const std::filesystem::path dir = std::filesystem::path(T10_TEST_TMP_DIR) / "shaders";
+// One folder per test case: ctest runs the cases as separate processes, in parallel.
+std::filesystem::path scratch(const std::string& testCase) {
+    const std::filesystem::path dir = std::filesystem::path(T10_TEST_TMP_DIR) / "shaders" / testCase;
     std::filesystem::create_directories(dir);
     return dir;
 }
@@ -35,7 +36,7 @@ void write(const std::filesystem::path& file, const std::string& text) { std::of
 
 TEST_CASE("a valid program compiles and links", "[shader]") {
     context();
-    const auto dir = scratch();
+    const auto dir = scratch("valid");
     write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "Ok.frag", "#version 430 core\nout vec4 c;\nvoid main() { c = vec4(1); }\n");
     t10::ShaderManager shaders({dir});
@@ -45,10 +46,12 @@ TEST_CASE("a valid program compiles and links", "[shader]") {
 }
 
 TEST_CASE("earlier folders win over later ones", "[shader]") {
-    const auto dir = scratch();
+    const auto dir = scratch("order");
     const auto first = dir / "first";
     std::filesystem::create_directories(first);
     write(first / "Ok.frag", "// override\n");
+    write(dir / "Ok.frag", "// fallback\n");
+    write(dir / "Ok.vert", "// only in the later folder\n");
     t10::ShaderManager shaders({first, dir});
     CHECK(shaders.find("Ok.frag") == first / "Ok.frag");
     CHECK(shaders.find("Ok.vert") == dir / "Ok.vert");
@@ -56,7 +59,8 @@ TEST_CASE("earlier folders win over later ones", "[shader]") {
 
 TEST_CASE("a compile error names the file and quotes the driver log", "[shader]") {
     context();
-    const auto dir = scratch();
+    const auto dir = scratch("compile");
+    write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "Broken.frag", "#version 430 core\nout vec4 c;\nvoid main() { c = not_declared; }\n");
     t10::ShaderManager shaders({dir});
     try {
@@ -72,7 +76,8 @@ TEST_CASE("a compile error names the file and quotes the driver log", "[shader]"
 
 TEST_CASE("a link error names the files", "[shader]") {
     context();
-    const auto dir = scratch();
+    const auto dir = scratch("link");
+    write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "NoMain.frag", "#version 430 core\nout vec4 c;\nvoid helper() { c = vec4(0); }\n");
     t10::ShaderManager shaders({dir});
     CHECK_THROWS_WITH(shaders.createProgram({"Ok.vert", "NoMain.frag"}), Catch::Contains("program link failed"));
@@ -85,7 +90,7 @@ TEST_CASE("a missing shader lists every folder searched", "[shader]") {
 }
 
 TEST_CASE("an unknown extension is an error, not a guess", "[shader]") {
-    const auto dir = scratch();
+    const auto dir = scratch("unknown");
     write(dir / "Odd.glsl", "void main() {}\n");
     t10::ShaderManager shaders({dir});
     context();
