@@ -95,6 +95,7 @@ bool GL_Init(t10::App& app)
     GLenum uiDrawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, uiDrawBuffers);
     // [/step 23]
+
     t10::requireCompleteFramebuffer(GL_DRAW_FRAMEBUFFER, "g_uiFBOPostProc");
 
     // Bind luminance texture

@@ -109,6 +109,7 @@ bool GL_Init(t10::App& app)
     GLenum uiDrawBuffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     glDrawBuffers(2, uiDrawBuffers);
     // [/step 23]
+
     t10::requireCompleteFramebuffer(GL_DRAW_FRAMEBUFFER, "g_uiFBOPostProc");
 
     // Bind luminance texture
@@ -122,13 +123,11 @@ bool GL_Init(t10::App& app)
     glGenFramebuffers(1, &g_uiFBOBloom);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, g_uiFBOBlur);
 
-    // Create blur texture at half resolution. It must match level 1 of the bloom texture, which is
-    // max(1, size / 2): the tutorial's plain size / 2 is 0 (invalid) for a 1 pixel wide window
-    int iHalfWidth = max(1, g_iWindowWidth / 2);
-    int iHalfHeight = max(1, g_iWindowHeight / 2);
+    // Create blur texture at half resolution. Integer division rounds odd sizes down, exactly as
+    // level 1 of the bloom texture does (common/ keeps the window at least 2x2, so never 0)
     glGenTextures(1, &g_uiBlur);
     glBindTexture(GL_TEXTURE_2D, g_uiBlur);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R11F_G11F_B10F, iHalfWidth, iHalfHeight);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_R11F_G11F_B10F, g_iWindowWidth / 2, g_iWindowHeight / 2);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -178,11 +177,9 @@ void GL_RenderPostProcess()
     // [/step 24]
 
     // [step 32] Blur passes at half resolution; first horizontally from bloom level 0 into g_uiBlur
-    // Half viewport (matching level 1 of the bloom texture, see GL_Init)
-    int iHalfWidth = max(1, g_iWindowWidth / 2);
-    int iHalfHeight = max(1, g_iWindowHeight / 2);
-    glViewport(0, 0, iHalfWidth, iHalfHeight);
-    vec2 v2InverseRes = 1.0f / vec2((float)iHalfWidth, (float)iHalfHeight);
+    // Half viewport
+    glViewport(0, 0, g_iWindowWidth / 2, g_iWindowHeight / 2);
+    vec2 v2InverseRes = 1.0f / vec2((float)(g_iWindowWidth / 2), (float)(g_iWindowHeight / 2));
     glBindBuffer(GL_UNIFORM_BUFFER, g_uiInverseResUBO);
     glBufferData(GL_UNIFORM_BUFFER, sizeof(vec2), &v2InverseRes, GL_STATIC_DRAW);
 
