@@ -82,6 +82,15 @@ file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_shaders/PostProcess.frag
 add_test(NAME "cli: broken shader names the file"
          COMMAND ${EXPECT} 1 "broken_shaders/PostProcess.frag: shader compilation failed" --
          ${BIN}/${S0} ${GOLDEN_ARGS} --shader-dir ${CMAKE_CURRENT_BINARY_DIR}/broken_shaders)
+# A GL error during a frame ends the run with exit 1 and the message: a Gauss.frag without the
+# subroutine uniform makes Part 3's glUniformSubroutinesuiv call invalid.
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/no_subroutine_shaders/Gauss.frag
+     "#version 430 core\nlayout(binding = 17) uniform sampler2D s2InputTexture;\nout vec3 v3ColourOut;\n"
+     "void main() { v3ColourOut = texelFetch(s2InputTexture, ivec2(gl_FragCoord.xy), 0).rgb; }\n")
+add_test(NAME "cli: a GL error fails the run with its message"
+         COMMAND ${EXPECT} 1 "error: GL error in frame 0" --
+         ${BIN}/tutorial10_part3_gaussian ${GOLDEN_ARGS} --shader-dir ${CMAKE_CURRENT_BINARY_DIR}/no_subroutine_shaders)
+
 # --- Backends, window mode, resizes, HDR output (the part0 stage stands for all). -------------
 add_test(NAME "backend: osmesa matches the golden"
          COMMAND ${GOLDEN_TEST} ${BIN} ${OUT}/osmesa ${S0} --backend osmesa)

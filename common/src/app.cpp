@@ -43,31 +43,6 @@ void createParentDirectory(const std::string& file) {
 
 } // namespace
 
-// GL errors from the KHR_debug callback (debug builds) and glGetError (always).
-struct App::DebugState {
-    std::vector<std::string> errors;
-};
-
-#ifdef T10_GL_DEBUG
-namespace {
-
-void GLAPIENTRY debugCallback(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
-                              const void* user) {
-    (void)source;
-    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
-    auto* state = static_cast<std::vector<std::string>*>(const_cast<void*>(user));
-    std::ostringstream text;
-    text << "GL debug (id " << id << "): " << message;
-    if (type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH) {
-        state->push_back(text.str());
-    } else {
-        std::cerr << "warning: " << text.str() << "\n";
-    }
-}
-
-} // namespace
-#endif
-
 App::App(const Stage& stage, const Options& options, Context& context)
     : stage_(stage), options_(options), context_(context),
       shaders_([&] {
@@ -77,12 +52,8 @@ App::App(const Stage& stage, const Options& options, Context& context)
           dirs.emplace_back(T10_COMMON_SHADER_DIR);
           return dirs;
       }()),
-      camera_(*findCameraPreset(options.camera)), debug_(std::make_unique<DebugState>()) {
-#ifdef T10_GL_DEBUG
-    glEnable(GL_DEBUG_OUTPUT);
-    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
-    glDebugMessageCallback(debugCallback, &debug_->errors);
-#endif
+      camera_(*findCameraPreset(options.camera)), glErrors_(std::make_unique<GlErrorLog>()) {
+    glErrors_->installDebugCallback();
     if (options_.verbose) {
         std::cout << "backend:  " << context_.description() << "\n"
                   << "vendor:   " << glString(GL_VENDOR) << "\n"
@@ -235,19 +206,15 @@ int App::run() {
         if (!window) glFinish();
         const double renderMs = secondsSince(start) * 1000.0;
         frameTimeMs_ = window ? elapsed * 1000.0 : renderMs;
-        for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
-            char code[16];
-            std::snprintf(code, sizeof code, "0x%04X", error);
-            debug_->errors.push_back(std::string("glGetError returned ") + code);
-        }
-        if (!debug_->errors.empty()) {
-            std::string all;
-            for (const auto& e : debug_->errors) all += "\n  " + e;
-            throw Error("GL error in frame " + std::to_string(frame) + ":" + all);
-        }
+        glErrors_->pollGetError();
+        if (!glErrors_->empty()) throw Error("GL error in frame " + std::to_string(frame) + ":" + glErrors_->describe());
         times.push_back(renderMs);
         if (options_.verbose) std::cout << "frame " << frame << ": " << renderMs << " ms\n";
-        if (frames != 0 && frame == frames - 1) writeOutputs();
+        if (frames != 0 && frame == frames - 1) {
+            writeOutputs();
+            glErrors_->pollGetError();
+            if (!glErrors_->empty()) throw Error("GL error while reading the outputs:" + glErrors_->describe());
+        }
         if (window && secondsSince(titleTime) > kTitleInterval) {
             titleTime = Clock::now();
             char title[160];

@@ -6,6 +6,7 @@
 #include "t10/cli.hpp"
 #include "t10/context.hpp"
 #include "t10/framebuffer.hpp"
+#include "t10/gl_errors.hpp"
 #include "t10/quad.hpp"
 #include "t10/scene.hpp"
 #include "t10/shader.hpp"
@@ -66,8 +67,7 @@ private:
     bool lookActive_ = false;
     double lastCursorX_ = 0.0;
     double lastCursorY_ = 0.0;
-    struct DebugState;
-    std::unique_ptr<DebugState> debug_;
+    std::unique_ptr<GlErrorLog> glErrors_;
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).
