@@ -9,7 +9,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build, the tests and the headless renders need.
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev xvfb xauth
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libimgui-dev xvfb xauth
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -58,3 +58,20 @@ bless: build
 
 clean:
 	rm -rf $(BUILD) $(OUT)
+
+# Exercise 39 measured: time per frame and halo radius for 0-10 blur passes at 1280x720 (extras/).
+.PHONY: bench-passes
+# gnuplot draws the plot; only this target needs it.
+bench-passes: PACKAGES += gnuplot-nox
+bench-passes: build
+	tests/bench/bench_passes.sh $(BIN) $(OUT) 10 5 1280x720 3
+
+# The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
+# http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).
+.PHONY: site site-serve
+site: configure
+	cmake --build $(BUILD) --target site
+
+site-serve: site
+	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
+	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port

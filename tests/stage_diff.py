@@ -7,11 +7,16 @@ usage: stage_diff.py OLD_DIR NEW_DIR FIRST_STEP LAST_STEP
 Passes when
 - the folders hold only host code (.cpp) and shaders (.vert .frag .geom .comp .tesc .tese),
 - no file of the old stage disappears,
-- every line the new stage adds is blank, part of the file's header comment, a `#version` line, or
-  inside a `[step N]` ... `[/step N]` block with FIRST_STEP <= N <= LAST_STEP,
-- lines of the old stage are only removed where such a step block replaces them.
+- every line the new stage adds is blank, braces only, part of the file's header comment, a `#version` line,
+  inside a `[step N]` ... `[/step N]` block with FIRST_STEP <= N <= LAST_STEP, or the same text as a
+  line the old stage had there and the new one removed (code re-indented or moved by a step that
+  wraps it, which adds nothing),
+- lines of the old stage are only removed where such a step block replaces them, where they move,
+  or where they belonged to an earlier step's block (a later step, such as an exercise, may change
+  the code of an earlier one; code outside every step may not change at all).
 Prints every offending line with its file and line number, and exits 1 if there is any.
 """
+import collections
 import difflib
 import pathlib
 import re
@@ -73,29 +78,47 @@ def main():
         new_lines = (new_dir / name).read_text().splitlines()
         old_lines = (old_dir / name).read_text().splitlines() if name in old_files else []
         owner = step_of_each_line(new_lines, new_dir / name, problems)
+        old_owner = step_of_each_line(old_lines, old_dir / name, []) if old_lines else []
         header = header_length(new_lines)
 
         def allowed(index):
             line = new_lines[index]
             step = owner[index]
+            # A line of braces only does nothing by itself; the `if` or loop that needs it is checked.
             return (not line.strip() or index < header or line.startswith("#version")
+                    or set(line.strip()) <= set("{};")
                     or (step is not None and first <= step <= last))
 
         matcher = difflib.SequenceMatcher(a=old_lines, b=new_lines, autojunk=False)
-        for tag, a0, a1, b0, b1 in matcher.get_opcodes():
-            if tag == "equal":
-                continue
+        opcodes = [op for op in matcher.get_opcodes() if op[0] != "equal"]
+        # Lines removed anywhere in the file, by content: an added line with the same text is a move.
+        moved = collections.Counter(old_lines[i].strip() for _, a0, a1, _, _ in opcodes for i in range(a0, a1)
+                                    if old_lines[i].strip())
+        # Lines added anywhere in the file, by content: a removed line with the same text is a move.
+        added_text = collections.Counter(new_lines[i].strip() for _, _, _, b0, b1 in opcodes for i in range(b0, b1)
+                                         if new_lines[i].strip())
+        for tag, a0, a1, b0, b1 in opcodes:
             added = range(b0, b1)
             for index in added:
+                text = new_lines[index].strip()
+                if not allowed(index) and moved[text] > 0:
+                    moved[text] -= 1
+                    continue
                 if not allowed(index):
                     problems.append(f"{new_dir.name}/{name}:{index + 1}: not part of steps {first}-{last}: "
                                     f"{new_lines[index].strip()}")
-            removed = [line for line in old_lines[a0:a1] if line.strip()]
             header_change = a1 <= header_length(old_lines) and b1 <= header
             replaced_by_step = any(owner[i] is not None and first <= owner[i] <= last for i in added)
-            if removed and not header_change and not replaced_by_step:
-                for line in removed:
-                    problems.append(f"{old_dir.name}/{name}: line removed without a step replacing it: {line.strip()}")
+            if header_change or replaced_by_step:
+                continue
+            for index in range(a0, a1):
+                text = old_lines[index].strip()
+                if not text or old_owner[index] is not None:
+                    continue
+                if added_text[text] > 0:
+                    added_text[text] -= 1
+                    continue
+                problems.append(f"{old_dir.name}/{name}:{index + 1}: line removed without a step replacing it: {text}")
     for problem in problems:
         print(problem)
     print(f"{old_dir.name} -> {new_dir.name}: " + ("only steps %d-%d" % (first, last) if not problems
