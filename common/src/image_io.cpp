@@ -5,6 +5,8 @@
 // failure throws t10::Error with a message that starts with the file's path.
 #include "t10/image_io.hpp"
 
+#include "t10/file.hpp"
+
 #include "t10/error.hpp"
 
 // OpenEXR's and Imath's headers trip -Wshadow and -Wconversion when they are not on a system
@@ -49,15 +51,9 @@ FilePtr openFile(const std::string& path, const char* mode) {
 }
 
 std::vector<std::uint8_t> readFileBytes(const std::string& path) {
-    FilePtr file = openFile(path, "rb");
     std::vector<std::uint8_t> bytes;
-    std::uint8_t chunk[16384];
-    for (;;) {
-        const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
-        bytes.insert(bytes.end(), chunk, chunk + got);
-        if (got < sizeof chunk) break;
-    }
-    if (std::ferror(file.get())) fail(path, std::string("cannot read file: ") + std::strerror(errno));
+    std::string fault;
+    if (!readFile(path, bytes, fault)) fail(path, fault);
     return bytes;
 }
 

@@ -5,6 +5,8 @@
 // allocation. Right-to-left files (descriptor bit 4) are rejected: no common writer produces them.
 #include "t10/tga.hpp"
 
+#include "t10/file.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -168,22 +170,9 @@ TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::stri
 }
 
 TgaResult loadTga(const std::string& path) {
-    // std::fopen sets errno reliably, so the message can say why the file did not open.
-    errno = 0;
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) return fail(path, std::string("cannot open file: ") + std::strerror(errno));
-
     std::vector<std::uint8_t> bytes;
-    std::uint8_t chunk[16384];
-    for (;;) {
-        const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
-        bytes.insert(bytes.end(), chunk, chunk + got);
-        if (got < sizeof chunk) break;
-    }
-    if (std::ferror(file.get())) {
-        const int err = errno;
-        return fail(path, std::string("cannot read file: ") + (err != 0 ? std::strerror(err) : "read error"));
-    }
+    std::string fault;
+    if (!readFile(path, bytes, fault)) return fail(path, fault);
     return decodeTga(bytes.data(), bytes.size(), path);
 }
 

@@ -21,6 +21,17 @@ int Dump::levelCount(int unit) const {
     return count;
 }
 
+double Dump::luminanceKey() const {
+    const int levels = levelCount(16);
+    if (levels == 0) throw Error(dir + ": no luminance texture (unit 16) was written");
+    const ImageF last = level(16, levels - 1);
+    if (last.width != 1 || last.height != 1) {
+        throw Error(dir + ": the last luminance level is " + std::to_string(last.width) + "x" +
+                    std::to_string(last.height) + ", not 1x1");
+    }
+    return last.data[0];
+}
+
 Dump loadDump(const std::string& name) {
     const char* root = std::getenv("T10_DUMP_DIR");
     if (root == nullptr || *root == '\0') throw Error("T10_DUMP_DIR is not set: run these tests through ctest");

@@ -16,6 +16,9 @@ struct Dump {
     ImageF level(int unit, int level) const;
     // Number of levels written for `unit`.
     int levelCount(int unit) const;
+    // The value in the last (1x1) level of the luminance texture on unit 16: the range-mapped scene
+    // key (GL_R16) or the log key itself (GL_R16F). Throws t10::Error if that level is not 1x1.
+    double luminanceKey() const;
 };
 
 // Loads T10_DUMP_DIR/<name>; throws t10::Error naming what is missing.

@@ -93,19 +93,9 @@ t10::Image8 finalFrame(const t10::ImageF& accumulation, double key, double yw, c
 
 // --- What the GPU wrote. ------------------------------------------------------------------------
 
-// The value in the 1x1 level of the luminance texture (unit 16).
-double smallestLevel(const Dump& dump) {
-    const int levels = dump.levelCount(16);
-    REQUIRE(levels > 0);
-    const t10::ImageF last = dump.level(16, levels - 1);
-    REQUIRE(last.width == 1);
-    REQUIRE(last.height == 1);
-    return last.data[0];
-}
-
 // ln Ya as the final pass sees it: undo the range mapping for GL_R16, take the value as it is for R16F.
 double gpuLogKey(const Dump& dump, double yw, bool r16f) {
-    const double value = smallestLevel(dump);
+    const double value = dump.luminanceKey();
     return r16f ? value : std::log(keyFromMapped(value, yw));
 }
 
@@ -192,8 +182,8 @@ TEST_CASE("extras with default settings renders Part 3's frame and buffers", "[e
     const auto part3 = loadDump("part3_pot");
     const auto frame = t10::test::byteError(extras.frame, part3.frame);
     report("extras defaults vs Part 3 (256x256)", frame);
-    const double keyExtras = smallestLevel(extras);
-    const double keyPart3 = smallestLevel(part3);
+    const double keyExtras = extras.luminanceKey();
+    const double keyPart3 = part3.luminanceKey();
     const double bloomError = worstRelativeToPeak(extras.level(17, 1), part3.level(17, 1));
     std::cout << "  mapped key " << keyExtras << " vs " << keyPart3 << ", blurred bloom worst difference "
               << bloomError << " of peak\n";
@@ -242,7 +232,7 @@ TEST_CASE("step 37: a larger white point saturates fewer pixels", "[extras][step
 TEST_CASE("step 37: the white point reaches the range mapping and the tone map", "[extras][step37]") {
     for (const auto& [name, yw] : {std::pair<const char*, double>{"extras_yw050", 0.5}, {"extras_yw100", 1.0}}) {
         const auto dump = loadDump(name);
-        const double gpuMapped = smallestLevel(dump);
+        const double gpuMapped = dump.luminanceKey();
         const double cpuMapped = meanMappedR16(dump.accumulation, yw);
         // At 256x256 every 2x2 average is exact; each of the 8 levels below level 0 rounds to the
         // nearest R16 step again: half a step per level (the Part 1 bound). Mapping with the wrong
@@ -260,7 +250,7 @@ TEST_CASE("step 37: the white point reaches the range mapping and the tone map",
 
 TEST_CASE("step 37: --no-bloom is Part 1's tone mapping of the same frame", "[extras][step37]") {
     const auto dump = loadDump("extras_nobloom");
-    const double key = keyFromMapped(smallestLevel(dump), ref::kYwhite);
+    const double key = keyFromMapped(dump.luminanceKey(), ref::kYwhite);
     const auto cpu = t10::test::byteError(finalFrame(dump.accumulation, key, ref::kYwhite), dump.frame);
     report("--no-bloom vs the CPU operator without bloom", cpu);
     CHECK(cpu.max <= kOperatorMaxSteps);
@@ -364,7 +354,7 @@ TEST_CASE("step 38: the strength scales the bloom that is added", "[extras][step
     // precision where the reference is exact; with the bloom weighted by 2 that can add a step where
     // the halo is steep (measured: none beyond the operator's one step). The weight 0.98 instead
     // of the uniform is off by up to 170 steps.
-    const double key = keyFromMapped(smallestLevel(strong), ref::kYwhite);
+    const double key = keyFromMapped(strong.luminanceKey(), ref::kYwhite);
     const t10::ImageF bloom = strong.level(17, 1);
     const auto error = t10::test::byteError(finalFrame(strong.accumulation, key, ref::kYwhite, &bloom, 2.0), strong.frame);
     report("strength 2 vs CPU (GPU bloom x 2)", error);
@@ -387,7 +377,7 @@ TEST_CASE("step 39: more blur passes widen the halo of a hot pixel", "[extras][s
             // No pass: the final pass reads level 0, unblurred. The 2x2 block's second moment is
             // 4 x (0.5^2 + 0.5^2) / 4 = 0.5 px^2 exactly.
             moments.push_back(secondMoment(level0, 1.0));
-            const double key = keyFromMapped(smallestLevel(dump), ref::kYwhite);
+            const double key = keyFromMapped(dump.luminanceKey(), ref::kYwhite);
             const auto error =
                 t10::test::byteError(finalFrame(dump.accumulation, key, ref::kYwhite, &level0, 0.98), dump.frame);
             report("0 passes: frame vs CPU with the unblurred level 0 added", error);

@@ -13,16 +13,6 @@ namespace ref = t10::ref;
 
 namespace {
 
-// The 1x1 level of the luminance chain: the mapped log-average that the final pass reads.
-double gpuMappedKey(const t10::test::Dump& dump) {
-    const int levels = dump.levelCount(16);
-    REQUIRE(levels > 0);
-    const t10::ImageF last = dump.level(16, levels - 1);
-    REQUIRE(last.width == 1);
-    REQUIRE(last.height == 1);
-    return last.data[0];
-}
-
 void reportKey(const char* label, double gpuMapped, double cpuMapped) {
     const double gpuKey = ref::keyFromMapped(gpuMapped);
     const double cpuKey = ref::keyFromMapped(cpuMapped);
@@ -43,7 +33,7 @@ TEST_CASE("the luminance chain ends in one texel: floor(log2(max)) + 1 levels", 
 
 TEST_CASE("scene key at a power-of-two size equals the CPU log-average", "[part1]") {
     const auto dump = loadDump("part1_pot");
-    const double gpu = gpuMappedKey(dump);
+    const double gpu = dump.luminanceKey();
     const double cpu = ref::meanMappedLogLuminance(dump.accumulation, true);
     reportKey("256x256", gpu, cpu);
     // At a power-of-two size every 2x2 average is exact, but each of the levels below level 0 stores
@@ -54,7 +44,7 @@ TEST_CASE("scene key at a power-of-two size equals the CPU log-average", "[part1
 
 TEST_CASE("scene key at a non-power-of-two size stays close to the CPU log-average", "[part1]") {
     const auto dump = loadDump("part1_npot");
-    const double gpu = gpuMappedKey(dump);
+    const double gpu = dump.luminanceKey();
     const double cpu = ref::meanMappedLogLuminance(dump.accumulation, true);
     reportKey("320x180", gpu, cpu);
     // With odd sizes (45 -> 22 -> 11 -> 5) glGenerateMipmap's filter is implementation-defined: a
@@ -67,7 +57,7 @@ TEST_CASE("scene key at a non-power-of-two size stays close to the CPU log-avera
 TEST_CASE("every pixel of the final frame matches the CPU tone map", "[part1]") {
     for (const char* name : {"part1_pot", "part1_npot"}) {
         const auto dump = loadDump(name);
-        const double key = ref::keyFromMapped(gpuMappedKey(dump));
+        const double key = ref::keyFromMapped(dump.luminanceKey());
         const t10::Image8 expected = ref::finalFrame(dump.accumulation, key);
         const auto error = t10::test::byteError(expected, dump.frame);
         std::cout << name << " final frame vs CPU tone map: max " << error.max << " steps, mean " << error.mean

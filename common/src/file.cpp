@@ -1,0 +1,34 @@
+// Whole-file reading shared by the TGA loader and the image readers.
+#include "t10/file.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace t10 {
+
+bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& fault) {
+    // std::fopen sets errno reliably, so the message can say why the file did not open.
+    errno = 0;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!file) {
+        fault = std::string("cannot open file: ") + std::strerror(errno);
+        return false;
+    }
+    bytes.clear();
+    std::uint8_t chunk[16384];
+    for (;;) {
+        const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
+        bytes.insert(bytes.end(), chunk, chunk + got);
+        if (got < sizeof chunk) break;
+    }
+    if (std::ferror(file.get())) {
+        const int error = errno;
+        fault = std::string("cannot read file: ") + (error != 0 ? std::strerror(error) : "read error");
+        return false;
+    }
+    return true;
+}
+
+} // namespace t10
