@@ -1,0 +1,450 @@
+#!/usr/bin/env python3
+"""Loads a page of the built site in headless Chromium and checks what a reader would see.
+
+The site is served from a local HTTP server on 127.0.0.1 (a free port) and Chromium is driven over
+the DevTools protocol through a pipe (--remote-debugging-pipe), so nothing beyond the Python standard
+library and Debian's chromium is needed. Chromium resolves every host name except 127.0.0.1 to
+"not found", and every request it makes is recorded: the page must not reach for the network.
+
+Checks, in both the light and the dark scheme:
+  - every formula rendered: as many KaTeX elements as the HTML has \\( \\) and \\[ \\] formulas, no
+    KaTeX error, no raw $$, \\( or \\[ left in the text;
+  - every image loaded (complete, natural width > 0; the rendered frames are 1280x720);
+  - the step numbers the reader sees (CSS counters, read back from the layout) run 1..N in order and
+    match the step anchors;
+  - every code excerpt has code;
+  - no request failed or went anywhere but the local server, and no script error was reported.
+It writes full-page screenshots (<page>-light.png, <page>-dark.png) into --out.
+"""
+
+import argparse
+import base64
+import functools
+import html.parser
+import http.server
+import json
+import os
+import re
+import select
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+
+class Failure(Exception):
+    pass
+
+
+# --- The static HTML: how many formulas should be rendered -------------------------------------
+
+class FormulaCounter(html.parser.HTMLParser):
+    SKIP = {"pre", "code", "script", "style", "textarea"}
+
+    def __init__(self):
+        super().__init__()
+        self.depth = 0
+        self.text = []
+
+    def handle_starttag(self, tag, attrs):
+        if tag in self.SKIP:
+            self.depth += 1
+
+    def handle_endtag(self, tag):
+        if tag in self.SKIP and self.depth:
+            self.depth -= 1
+
+    def handle_data(self, data):
+        if not self.depth:
+            self.text.append(data)
+
+
+def expected_formulas(path):
+    counter = FormulaCounter()
+    with open(path, encoding="utf-8") as f:
+        counter.feed(f.read())
+    text = "".join(counter.text)
+    return len(re.findall(r"\\\(", text)), len(re.findall(r"\\\[", text))
+
+
+# --- Local server ------------------------------------------------------------------------------
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, fmt, *args):
+        pass
+
+
+def start_server(root):
+    handler = functools.partial(QuietHandler, directory=root)
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)  # port 0: a free port
+    server.daemon_threads = True
+    thread = threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.1}, daemon=True)
+    thread.start()
+    return server
+
+
+# --- Chromium over the DevTools pipe -----------------------------------------------------------
+
+class Browser:
+    def __init__(self, chromium, profile, log_path, deadline):
+        self.deadline = deadline
+        to_chrome_r, self.to_chrome = os.pipe()
+        self.from_chrome, from_chrome_w = os.pipe()
+
+        def child_fds():  # Chromium reads commands on fd 3 and writes replies on fd 4
+            a, b = os.dup(to_chrome_r), os.dup(from_chrome_w)
+            os.dup2(a, 3)
+            os.dup2(b, 4)
+
+        self.log = open(log_path, "w")
+        args = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--remote-debugging-pipe",
+                f"--user-data-dir={profile}", "--no-first-run", "--no-default-browser-check",
+                "--disable-extensions", "--disable-background-networking", "--disable-component-update",
+                "--disable-sync", "--disable-default-apps", "--disable-dev-shm-usage", "--mute-audio",
+                "--hide-scrollbars", "--force-device-scale-factor=1", "--window-size=1280,900",
+                # Everything but the local server is unreachable: a CDN link would fail loudly.
+                "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1",
+                "about:blank"]
+        # Started before any thread exists (preexec_fn is not thread-safe), in its own process
+        # group so that it and all its helper processes can be ended together.
+        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log,
+                                     preexec_fn=child_fds, close_fds=False, start_new_session=True)
+        os.close(to_chrome_r)
+        os.close(from_chrome_w)
+        self.buffer = b""
+        self.next_id = 0
+        self.events = []
+
+    def remaining(self):
+        left = self.deadline - time.monotonic()
+        if left <= 0:
+            raise Failure("time limit reached")
+        return left
+
+    def _read(self, timeout):
+        ready, _, _ = select.select([self.from_chrome], [], [], timeout)
+        if not ready:
+            return False
+        chunk = os.read(self.from_chrome, 1 << 20)
+        if not chunk:
+            raise Failure(f"chromium closed the DevTools pipe (exit code {self.proc.poll()}); see its log")
+        self.buffer += chunk
+        while b"\0" in self.buffer:
+            raw, self.buffer = self.buffer.split(b"\0", 1)
+            self.events.append(json.loads(raw))
+        return True
+
+    def send(self, method, params=None, session=None, timeout=30):
+        self.next_id += 1
+        message = {"id": self.next_id, "method": method, "params": params or {}}
+        if session:
+            message["sessionId"] = session
+        data = json.dumps(message).encode() + b"\0"
+        while data:
+            data = data[os.write(self.to_chrome, data):]
+        end = time.monotonic() + min(timeout, self.remaining())
+        while True:
+            for i, event in enumerate(self.events):
+                if event.get("id") == self.next_id:
+                    del self.events[i]
+                    if "error" in event:
+                        raise Failure(f"{method}: {event['error']}")
+                    return event.get("result", {})
+            if time.monotonic() > end:
+                raise Failure(f"{method}: no reply within {timeout} s")
+            self._read(0.1)
+
+    def wait_event(self, method, session=None, timeout=30):
+        end = time.monotonic() + min(timeout, self.remaining())
+        while True:
+            for i, event in enumerate(self.events):
+                if event.get("method") == method and (session is None or event.get("sessionId") == session):
+                    del self.events[i]
+                    return event.get("params", {})
+            if time.monotonic() > end:
+                raise Failure(f"no {method} within {timeout} s")
+            self._read(0.1)
+
+    def drain(self):
+        while self._read(0):
+            pass
+        events, self.events = [e for e in self.events if "method" in e], [e for e in self.events if "id" in e]
+        return events
+
+    def close(self):
+        try:
+            if self.proc.poll() is None:
+                try:
+                    self.send("Browser.close", timeout=5)
+                except Exception:
+                    pass
+                try:
+                    self.proc.wait(timeout=5)
+                except subprocess.TimeoutExpired:
+                    pass
+        finally:
+            # Whatever is left of the process group (helpers included) is ended, by group id.
+            for sig in (signal.SIGTERM, signal.SIGKILL):
+                try:
+                    os.killpg(self.proc.pid, sig)
+                except ProcessLookupError:
+                    break
+                try:
+                    self.proc.wait(timeout=3)
+                except subprocess.TimeoutExpired:
+                    pass
+            for fd in (self.to_chrome, self.from_chrome):
+                try:
+                    os.close(fd)
+                except OSError:
+                    pass
+            self.log.close()
+
+
+# --- What the page shows -------------------------------------------------------------------------
+
+PAGE_STATE = r"""
+(() => {
+  const content = document.querySelector('.content');
+  const r = {};
+  r.math = document.documentElement.dataset.math || '';
+  r.katex = document.querySelectorAll('.content .katex').length;
+  r.katexDisplay = document.querySelectorAll('.content .katex-display').length;
+  r.katexErrors = [...document.querySelectorAll('.katex-error')].map(e => e.textContent.slice(0, 80));
+  const raw = [];
+  const walker = document.createTreeWalker(content, NodeFilter.SHOW_TEXT, {
+    acceptNode: n => n.parentElement.closest('pre, code, script, style, .katex')
+      ? NodeFilter.FILTER_REJECT : NodeFilter.FILTER_ACCEPT });
+  for (let n; (n = walker.nextNode());)
+    if (/\$\$|\\\(|\\\)|\\\[|\\\]/.test(n.nodeValue)) raw.push(n.nodeValue.trim().slice(0, 80));
+  r.rawMath = raw;
+  r.images = [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
+    w: i.naturalWidth, h: i.naturalHeight, render: !!i.closest('figure.render')}));
+  r.items = [...document.querySelectorAll('.steps > ol:not(#markdown-toc) > li')].map(li => li.id);
+  r.excerpts = [...document.querySelectorAll('.content figure.excerpt')].map(f => ({
+    step: f.dataset.step, stage: f.dataset.stage, file: f.dataset.file,
+    blocks: f.querySelectorAll('pre').length,
+    folded: !!f.closest('details:not([open])'),
+    empty: [...f.querySelectorAll('pre')].filter(p => p.textContent.trim().length === 0).length,
+    chars: [...f.querySelectorAll('pre')].reduce((s, p) => s + p.textContent.trim().length, 0)}));
+  r.missing = [...document.querySelectorAll('.excerpt-missing')].map(p => p.dataset.step);
+  r.background = getComputedStyle(document.body).backgroundColor;
+  r.height = document.documentElement.scrollHeight;
+  return JSON.stringify(r);
+})()
+"""
+
+
+def evaluate(browser, session, expression, await_promise=False):
+    result = browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True,
+                                               "awaitPromise": await_promise}, session)
+    if "exceptionDetails" in result:
+        raise Failure(f"script error: {result['exceptionDetails'].get('text')}")
+    return result["result"].get("value")
+
+
+def rendered_step_numbers(browser, session):
+    """The numbers the reader sees in front of each step: the CSS counters of the ::before boxes,
+    read back from Chromium's layout tree (generated content is laid out as text)."""
+    snap = browser.send("DOMSnapshot.captureSnapshot", {"computedStyles": [], "includeDOMRects": False},
+                        session, timeout=60)
+    strings = snap["strings"]
+    doc = snap["documents"][0]
+    nodes, layout = doc["nodes"], doc["layout"]
+    parent = nodes["parentIndex"]
+    names = nodes["nodeName"]
+    attributes = nodes["attributes"]
+    pseudo = {i: strings[t] for i, t in zip(nodes["pseudoType"]["index"], nodes["pseudoType"]["value"])}
+
+    def attr(i, name):
+        a = attributes[i]
+        for k, v in zip(a[::2], a[1::2]):
+            if strings[k] == name:
+                return strings[v]
+        return None
+
+    # Text of the layout objects that belong to a ::before pseudo-element of a step <li>.
+    found = []
+    for node, text in zip(layout["nodeIndex"], layout["text"]):
+        if text < 0:
+            continue
+        i = node
+        while i >= 0 and pseudo.get(i) != "before":
+            i = parent[i]
+        if i < 0:
+            continue
+        li = parent[i]
+        if strings[names[li]].lower() != "li":
+            continue
+        ol = parent[li]
+        if "markdown-toc" == attr(ol, "id"):
+            continue
+        found.append((attr(li, "id"), strings[text].strip()))
+    return found
+
+
+def check(state, page_html, expected_steps, allow_missing_from, label):
+    problems = []
+    inline, display = expected_formulas(page_html)
+    if state["math"] != "done":
+        problems.append(f"KaTeX did not run (data-math={state['math']!r})")
+    if state["katex"] != inline + display or state["katexDisplay"] != display:
+        problems.append(f"{state['katex']} formulas rendered ({state['katexDisplay']} displayed), "
+                        f"the HTML has {inline + display} ({display} displayed)")
+    if inline + display == 0:
+        problems.append("the page has no formulas at all")
+    if state["katexErrors"]:
+        problems.append(f"KaTeX errors: {state['katexErrors']}")
+    if state["rawMath"]:
+        problems.append(f"raw math left in the text: {state['rawMath'][:5]}")
+    if not state["images"]:
+        problems.append("no images")
+    for img in state["images"]:
+        if not img["complete"] or img["w"] <= 0:
+            problems.append(f"image not loaded: {img['src']}")
+        elif img["render"] and (img["w"], img["h"]) != (1280, 720):
+            problems.append(f"rendered frame {img['src']} is {img['w']}x{img['h']}, not 1280x720")
+    wanted = [f"step-{n}" for n in range(1, expected_steps + 1)]
+    if state["items"] != wanted:
+        problems.append(f"step anchors are {state['items']}, expected step-1 .. step-{expected_steps} in order")
+    if not state["excerpts"]:
+        problems.append("no code excerpts")
+    for ex in state["excerpts"]:
+        if ex["blocks"] == 0 or ex["empty"] or ex["chars"] == 0:
+            problems.append(f"empty excerpt: step {ex['step']} {ex['stage']}/{ex['file']}")
+    for step in state["missing"]:
+        if int(step) < allow_missing_from:
+            problems.append(f"step {step} shows the 'no code yet' placeholder")
+    return [f"[{label}] {p}" for p in problems]
+
+
+def screenshot(browser, session, path, width, view_height=900):
+    """A full-page screenshot: the viewport is made as tall as the page for the capture (sticky and
+    viewport-sized elements then render as in one tall window), then restored."""
+    metrics = browser.send("Page.getLayoutMetrics", {}, session)
+    height = int(metrics["cssContentSize"]["height"])
+    browser.send("Emulation.setDeviceMetricsOverride",
+                 {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session)
+    try:
+        shot = browser.send("Page.captureScreenshot", {
+            "format": "png", "fromSurface": True,
+            "clip": {"x": 0, "y": 0, "width": width, "height": height, "scale": 1}}, session, timeout=60)
+    finally:
+        browser.send("Emulation.setDeviceMetricsOverride",
+                     {"width": width, "height": view_height, "deviceScaleFactor": 1, "mobile": False}, session)
+    with open(path, "wb") as f:
+        f.write(base64.b64decode(shot["data"]))
+    return height
+
+
+def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, timeout=100,
+        schemes=("light", "dark")):
+    """Loads the page in each scheme; returns the list of problems found (empty: all good)."""
+    started = time.monotonic()
+    deadline = started + timeout
+    page_html = os.path.join(site, page)
+    if not os.path.isfile(page_html):
+        raise Failure(f"{page_html} does not exist: build the site first (make site)")
+    if not shutil.which(chromium):
+        raise Failure(f"{chromium}: not found (apt-get install chromium)")
+    os.makedirs(out, exist_ok=True)
+    stem = os.path.splitext(os.path.basename(page))[0]
+    profile = tempfile.mkdtemp(prefix="t10-chromium-")
+    browser = server = None
+    problems = []
+    light_background = None
+    try:
+        browser = Browser(chromium, profile, os.path.join(out, "chromium.log"), deadline)
+        server = start_server(site)
+        base = f"http://127.0.0.1:{server.server_address[1]}/"
+
+        target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        for domain in ("Page", "Network", "Runtime", "Log"):
+            browser.send(f"{domain}.enable", {}, session)
+        browser.send("Emulation.setDeviceMetricsOverride",
+                     {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+
+        for scheme in schemes:
+            browser.send("Emulation.setEmulatedMedia",
+                         {"features": [{"name": "prefers-color-scheme", "value": scheme}]}, session)
+            browser.drain()
+            browser.send("Page.navigate", {"url": base + page}, session)
+            browser.wait_event("Page.loadEventFired", session, timeout=60)
+            evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
+            state = json.loads(evaluate(browser, session, PAGE_STATE))
+            problems += check(state, page_html, steps, allow_missing_from, scheme)
+
+            numbers = rendered_step_numbers(browser, session)
+            shown = [(anchor, text.rstrip(".")) for anchor, text in numbers]
+            wanted = [(f"step-{n}", str(n)) for n in range(1, steps + 1)]
+            if shown != wanted:
+                problems.append(f"[{scheme}] the numbers shown in front of the steps are "
+                                f"{[t for _, t in shown]} (anchors {[a for a, _ in shown]}), "
+                                f"expected 1..{steps} on step-1..step-{steps}")
+            if scheme == "light":
+                light_background = state["background"]
+            elif state["background"] == light_background:
+                problems.append(f"[{scheme}] the page background stays {state['background']} in the dark scheme")
+
+            shot = os.path.join(out, f"{stem}-{scheme}.png")
+            height = screenshot(browser, session, shot, width)
+            print(f"{scheme}: {state['katex']} formulas, {len(state['images'])} images, "
+                  f"{len(state['excerpts'])} excerpts, steps "
+                  f"{shown[0][1] if shown else '-'}..{shown[-1][1] if shown else '-'}; "
+                  f"screenshot {shot} ({width}x{height})", flush=True)
+
+            # Everything the page asked for came from the local server, and nothing failed.
+            for event in browser.drain():
+                method, params = event.get("method"), event.get("params", {})
+                if method == "Network.requestWillBeSent":
+                    url = params["request"]["url"]
+                    if not (url.startswith(base) or url.startswith(("data:", "about:", "blob:"))):
+                        problems.append(f"[{scheme}] request outside the local server: {url}")
+                elif method == "Network.responseReceived" and params["response"]["status"] >= 400:
+                    problems.append(f"[{scheme}] HTTP {params['response']['status']}: {params['response']['url']}")
+                elif method == "Network.loadingFailed":
+                    problems.append(f"[{scheme}] request failed: {params.get('errorText')}")
+                elif method == "Runtime.exceptionThrown":
+                    problems.append(f"[{scheme}] script error: {params['exceptionDetails'].get('text')}")
+                elif method == "Log.entryAdded" and params["entry"]["level"] == "error":
+                    problems.append(f"[{scheme}] console error: {params['entry'].get('text')}")
+    finally:
+        if browser:
+            browser.close()
+        if server:
+            server.shutdown()
+            server.server_close()
+        shutil.rmtree(profile, ignore_errors=True)
+    print(f"finished in {time.monotonic() - started:.1f} s", flush=True)
+    return problems
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--site", required=True, help="the built site")
+    ap.add_argument("--page", default="tutorial10.html")
+    ap.add_argument("--chromium", default="chromium")
+    ap.add_argument("--out", required=True, help="folder for the screenshots and Chromium's log")
+    ap.add_argument("--steps", type=int, default=40, help="the page must number its steps 1..STEPS")
+    ap.add_argument("--allow-missing-from", type=int, default=37,
+                    help="steps from this one on may show the 'code not in the repository yet' note")
+    ap.add_argument("--width", type=int, default=1280)
+    ap.add_argument("--timeout", type=float, default=100, help="seconds for the whole test")
+    args = ap.parse_args()
+    problems = run(args.site, args.page, args.chromium, args.out, args.steps, args.allow_missing_from,
+                   args.width, args.timeout)
+    if problems:
+        raise Failure("\n  ".join([f"{len(problems)} problem(s) on {args.page}:"] + problems))
+    print(f"ok: {args.page} renders completely in both schemes")
+
+
+if __name__ == "__main__":
+    try:
+        main()
+    except Failure as e:
+        print(f"FAIL: {e}", file=sys.stderr)
+        sys.exit(1)
