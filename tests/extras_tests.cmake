@@ -13,11 +13,7 @@ endif()
 add_executable(halo_radius bench/halo_radius.cpp)
 target_link_libraries(halo_radius PRIVATE t10_common t10_flags)
 
-# --- Inputs and renders for the numeric checks (fixture extras_dumps). ---------------------------
-add_executable(make_extras_inputs numeric/test_extras_inputs.cpp)
-target_link_libraries(make_extras_inputs PRIVATE t10_common t10_flags)
-add_test(NAME "dump: extras inputs" COMMAND ${BIN}/make_extras_inputs ${DUMPS}/extras_inputs)
-set_tests_properties("dump: extras inputs" PROPERTIES FIXTURES_SETUP extras_inputs)
+# --- Renders for the numeric checks (fixture extras_dumps; the inputs come from make_test_images). --
 
 # t10_add_extras_dump(<name> <args...>): one frame of extras into ${DUMPS}/<name>/ (as t10_add_dump,
 # but in a fixture of its own, so the other stages' numeric tests do not wait for these).
@@ -28,7 +24,7 @@ function(t10_add_extras_dump name)
     # "dumps" too: the checks compare with Part 1 and Part 3 dumps, and catch_discover_tests cannot
     # pass them a list of fixtures, so they get those through these setup tests.
     set_tests_properties("dump: ${name}" PROPERTIES FIXTURES_SETUP extras_dumps
-                         FIXTURES_REQUIRED "inputs;extras_inputs;dumps")
+                         FIXTURES_REQUIRED "inputs;dumps")
 endfunction()
 
 set(SCENE --size 256x256)
@@ -85,13 +81,13 @@ echo "exit code $rc, $count warning(s), expected $expected"
 foreach(input inf nan)
     add_test(NAME "extras: r16f with a ${input} pixel warns once about the key"
              COMMAND sh ${CMAKE_CURRENT_BINARY_DIR}/extras_key_warning.sh 1 ${BIN}/extras --headless --backend egl
-                     --frames 3 --input ${DUMPS}/extras_inputs/${input}.exr --luminance-format r16f)
+                     --frames 3 --input ${DUMPS}/inputs/${input}.exr --luminance-format r16f)
     add_test(NAME "extras: r16 with a ${input} pixel keeps a finite key"
              COMMAND sh ${CMAKE_CURRENT_BINARY_DIR}/extras_key_warning.sh 0 ${BIN}/extras --headless --backend egl
-                     --frames 3 --input ${DUMPS}/extras_inputs/${input}.exr)
+                     --frames 3 --input ${DUMPS}/inputs/${input}.exr)
     set_tests_properties("extras: r16f with a ${input} pixel warns once about the key"
                          "extras: r16 with a ${input} pixel keeps a finite key"
-                         PROPERTIES FIXTURES_REQUIRED extras_inputs)
+                         PROPERTIES FIXTURES_REQUIRED inputs)
 endforeach()
 
 # --- The command line: every option's bad values exit 2 with the allowed range. -----------------

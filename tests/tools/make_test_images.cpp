@@ -1,12 +1,17 @@
 // make_test_images: writes the synthetic HDR inputs the numeric tests post-process with --input:
 //   hot.exr  128x128 grey 0.05 with one 2x2 block of 20.0 centred on a texel of the half-size grid
 //   dim.exr  128x128 smooth gradient whose luminance stays below the bloom threshold (2.95 x 0.22)
+//   inf.exr, nan.exr  64x64 grey 0.1 with one texel of +infinity / NaN: through GL_R16F (no range
+//            mapping) log(inf) and log(NaN) reach the 1x1 luminance level, which is what a GPU whose
+//            glGenerateMipmap breaks float textures produces (exercise 40); through GL_R16 the value
+//            clamps to 1 and the key stays finite
 // usage: make_test_images OUT_DIR
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
 
 #include <filesystem>
 #include <iostream>
+#include <limits>
 
 namespace {
 
@@ -41,6 +46,16 @@ t10::ImageF dimGradient() {
     return image;
 }
 
+t10::ImageF greyWith(float special) {
+    constexpr int kSpecialSize = 64;
+    t10::ImageF image(kSpecialSize, kSpecialSize, 4);
+    for (int y = 0; y < kSpecialSize; ++y)
+        for (int x = 0; x < kSpecialSize; ++x)
+            for (int c = 0; c < 4; ++c) image.at(x, y, c) = c == 3 ? 1.0f : 0.1f;
+    for (int c = 0; c < 3; ++c) image.at(20, 30, c) = special;
+    return image;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -53,7 +68,9 @@ int main(int argc, char** argv) {
         const std::string dir = argv[1];
         t10::writeExr(dir + "/hot.exr", hotPixel());
         t10::writeExr(dir + "/dim.exr", dimGradient());
-        std::cout << "wrote " << dir << "/hot.exr and " << dir << "/dim.exr\n";
+        t10::writeExr(dir + "/inf.exr", greyWith(std::numeric_limits<float>::infinity()));
+        t10::writeExr(dir + "/nan.exr", greyWith(std::numeric_limits<float>::quiet_NaN()));
+        std::cout << "wrote hot.exr, dim.exr, inf.exr and nan.exr into " << dir << "\n";
         return 0;
     } catch (const t10::Error& error) {
         std::cerr << "make_test_images: error: " << error.what() << "\n";
