@@ -76,3 +76,15 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# Fuzzing (fuzz/): libFuzzer targets built with clang, ASan and UBSan into $(BUILD)/fuzz/, each run for
+# FUZZ_SECONDS (default 60); FUZZ_TARGETS="tga exr" picks some. Not part of `make test`.
+.PHONY: fuzz fuzz-build
+FUZZ_SECONDS ?= 60
+fuzz-build: PACKAGES += clang libclang-rt-14-dev
+fuzz-build: deps
+	@[ -f $(BUILD)/fuzz/build.ninja ] || CC=clang CXX=clang++ cmake -S fuzz -B $(BUILD)/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD)/fuzz -j $(JOBS)
+
+fuzz: fuzz-build
+	fuzz/run.sh $(BUILD)/fuzz $(FUZZ_SECONDS) $(FUZZ_TARGETS)

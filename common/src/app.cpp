@@ -4,6 +4,7 @@
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
+#include "t10/input_image.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -34,11 +35,15 @@ std::string glString(GLenum name) {
     return text != nullptr ? text : "?";
 }
 
-void createParentDirectory(const std::string& file) {
-    const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+// `option` names the command-line option in the message ("--dump DIR: cannot create ...").
+void createDirectory(const std::string& option, const std::filesystem::path& dir) {
     std::error_code error;
-    if (!parent.empty()) std::filesystem::create_directories(parent, error);
-    if (error) throw Error(file + ": cannot create folder " + parent.string() + ": " + error.message());
+    if (!dir.empty()) std::filesystem::create_directories(dir, error);
+    if (error) throw Error(option + ": cannot create folder " + dir.string() + ": " + error.message());
+}
+
+void createParentDirectory(const std::string& option, const std::string& file) {
+    createDirectory(option + " " + file, std::filesystem::path(file).parent_path());
 }
 
 } // namespace
@@ -60,11 +65,14 @@ App::App(const Stage& stage, const Options& options, Context& context)
                   << "renderer: " << glString(GL_RENDERER) << "\n"
                   << "version:  " << glString(GL_VERSION) << "\n";
     }
+    // The input image is checked before the scene is built, so a file that cannot be rendered (too
+    // large for this context or the memory, a side of 1, no colour channel) is refused at once.
+    ImageF image;
+    if (!options_.input.empty()) image = loadInputImage(options_.input, options_.keepNonFinite, std::cerr);
     quad_ = std::make_unique<FullScreenQuad>();
     scene_ = std::make_unique<Scene>(shaders_, T10_ASSET_DIR);
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
-        ImageF image = readExr(options_.input);
         if (options_.sizeGiven && (image.width != options_.width || image.height != options_.height)) {
             throw UsageError("--input " + options_.input + " is " + std::to_string(image.width) + "x" +
                              std::to_string(image.height) + " but --size asks for " + std::to_string(options_.width) +
@@ -140,18 +148,18 @@ void App::handleInput(double seconds) {
 void App::writeOutputs() {
     if (!options_.output.empty()) {
         if (width_ == 0 || height_ == 0) throw Error(options_.output + ": not written, the last frame was 0x0");
-        createParentDirectory(options_.output);
+        createParentDirectory("--output", options_.output);
         writePng(options_.output, readDefaultFramebuffer(width_, height_));
         std::cout << "wrote " << options_.output << "\n";
     }
     if (!options_.exr.empty()) {
         if (width_ == 0 || height_ == 0) throw Error(options_.exr + ": not written, the last frame was 0x0");
-        createParentDirectory(options_.exr);
+        createParentDirectory("--exr", options_.exr);
         writeExr(options_.exr, readTextureLevel(scene_->accumulationTexture(), 0, true));
         std::cout << "wrote " << options_.exr << "\n";
     }
     if (!options_.dumpDir.empty()) {
-        std::filesystem::create_directories(options_.dumpDir);
+        createDirectory("--dump " + options_.dumpDir, options_.dumpDir);
         GLint active = 0;
         glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
         for (GLuint unit : {15u, 16u, 17u}) {
@@ -174,9 +182,14 @@ void App::writeOutputs() {
 }
 
 int App::run() {
-    resize(width_, height_);
     const bool window = context_.isWindow();
     const int frames = options_.frames > 0 ? options_.frames : (window ? 0 : 1);
+    // Every output asked for is written after the last frame, or the run fails saying why.
+    const bool outputsAsked = !options_.output.empty() || !options_.exr.empty() || !options_.dumpDir.empty();
+    if (frames == 0 && outputsAsked)
+        throw UsageError("--output, --exr and --dump are written after the last of --frames N frames: give --frames");
+    std::string notWritten = "the window was closed before the last frame";
+    resize(width_, height_);
     std::vector<double> times;
     auto last = Clock::now();
     auto titleTime = last;
@@ -198,6 +211,7 @@ int App::run() {
         last = Clock::now();
         handleInput(elapsed);
         if (width_ == 0 || height_ == 0) {
+            notWritten = "the last frame (" + std::to_string(frame) + ") was 0x0, like a minimised window";
             if (window) glfwWaitEventsTimeout(0.1);
             continue;
         }
@@ -212,6 +226,7 @@ int App::run() {
         if (options_.verbose) std::cout << "frame " << frame << ": " << renderMs << " ms\n";
         if (frames != 0 && frame == frames - 1) {
             writeOutputs();
+            notWritten.clear();
             glErrors_->pollGetError();
             if (!glErrors_->empty()) throw Error("GL error while reading the outputs:" + glErrors_->describe());
         }
@@ -224,9 +239,7 @@ int App::run() {
         }
         context_.swapBuffers();
     }
-    if (frames == 0 && (!options_.output.empty() || !options_.exr.empty() || !options_.dumpDir.empty())) {
-        std::cerr << "note: --output, --exr and --dump are written after the last of --frames N frames\n";
-    }
+    if (outputsAsked && !notWritten.empty()) throw Error("the outputs asked for were not written: " + notWritten);
     if (options_.verbose && !times.empty()) {
         std::vector<double> sorted = times;
         std::sort(sorted.begin(), sorted.end());

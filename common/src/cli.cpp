@@ -66,20 +66,26 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
     app.add_option("--backend", backend, "auto | window | egl | osmesa (auto: a window when there is a display, "
                                          "else EGL, else OSMesa)")
         ->check(CLI::IsMember({"auto", "window", "egl", "osmesa"}));
-    app.add_option("--size", size, "Framebuffer size WIDTHxHEIGHT (default 1280x720)");
+    CLI::Option* sizeOption = app.add_option("--size", size, "Framebuffer size WIDTHxHEIGHT, each side 2 to 16384 "
+                                                              "(default 1280x720); --input images follow the same rule");
     app.add_option("--frames", options.frames, "Render N frames, then exit (headless default 1; window: until closed)")
         ->check(CLI::Range(1, 1000000));
-    app.add_option("--output", options.output, "Write the final frame as an 8-bit PNG (exactly what the window shows)");
-    app.add_option("--exr", options.exr, "Write the HDR accumulation buffer as an OpenEXR file (RGBA half)");
+    CLI::Option* outputOption = app.add_option("--output", options.output, "Write the final frame as an 8-bit PNG (exactly what the window shows)");
+    CLI::Option* exrOption = app.add_option("--exr", options.exr, "Write the HDR accumulation buffer as an OpenEXR file (RGBA half)");
     app.add_option("--camera", options.camera, "Camera preset: " + presetList() + " (default: default)");
     app.add_option("--shader-dir", options.shaderDir, "Look for shaders in DIR before the stage's own folder")
         ->check(CLI::ExistingDirectory);
     app.add_option("--input", options.input, "Post-process this HDR image (OpenEXR) instead of rendering the scene")
         ->check(CLI::ExistingFile);
-    app.add_option("--dump", options.dumpDir, "After the last frame, write every level of the textures on units "
+    CLI::Option* dumpOption = app.add_option("--dump", options.dumpDir, "After the last frame, write every level of the textures on units "
                                               "15-17 as PFM files into DIR (for numeric checks)");
-    app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
-                                                        "minimised window; for tests)");
+    CLI::Option* resizeOption = app.add_option(
+        "--resize-sequence", resizeSequence,
+        "Resize before each frame: WxH,WxH,... (for tests); each size follows the --size rule, and 0x0 stands for a "
+        "minimised window (nothing is rendered, so a run whose last frame is 0x0 cannot write its outputs)");
+    app.add_flag("--keep-non-finite", options.keepNonFinite,
+                 "Pass NaN and infinite pixels of --input on unchanged (default: +infinity becomes the largest half "
+                 "float, 65504, NaN and -infinity 0, with a warning; for testing a stage's own handling)");
     app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
     if (addOptions) addOptions(app);
 
@@ -92,7 +98,12 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         if (options.headless && options.backend == Backend::Window) {
             throw UsageError("--headless contradicts --backend window");
         }
-        if (!size.empty()) {
+        // An empty value is refused rather than read as "not given".
+        for (const CLI::Option* option : {outputOption, exrOption, dumpOption, resizeOption}) {
+            if (option->count() > 0 && option->as<std::string>().empty())
+                throw UsageError(option->get_name() + ": the value is empty");
+        }
+        if (sizeOption->count() > 0) {
             std::tie(options.width, options.height) = parseSize(size);
             options.sizeGiven = true;
         }

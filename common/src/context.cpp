@@ -11,10 +11,12 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GLFW/glfw3.h>
+#include <X11/Xlib.h>
 #ifdef T10_HAVE_OSMESA
 #include <GL/osmesa.h>
 #endif
 
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
@@ -57,6 +59,19 @@ bool hasExtension(const char* list, const char* name) {
 // ---------------------------------------------------------------------------------------------
 // GLFW window
 
+// Xlib's default error handler ends the process ("BadDrawable") when another client destroys our
+// window. This one only records that an X request failed; the window context then reports itself
+// closed, and the run ends like any other. Xlib's handler takes no user pointer, hence the flag.
+std::atomic<bool>& xRequestFailed() {
+    static std::atomic<bool> failed{false};
+    return failed;
+}
+
+int onXError(Display*, XErrorEvent*) {
+    xRequestFailed() = true;
+    return 0;
+}
+
 class WindowContext final : public Context {
 public:
     explicit WindowContext(const ContextOptions& options) {
@@ -88,9 +103,24 @@ public:
     std::string description() const override { return "GLFW window"; }
     bool isWindow() const override { return true; }
     GLFWwindow* window() const override { return window_; }
-    void swapBuffers() override { glfwSwapBuffers(window_); }
-    void pollEvents() override { glfwPollEvents(); }
-    bool shouldClose() const override { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+    // GLFW 3.3 puts Xlib's default handler back after some of its own calls: ours is installed
+    // again around the calls that talk to the X server every frame.
+    void swapBuffers() override {
+        XSetErrorHandler(onXError);
+        glfwSwapBuffers(window_);
+    }
+    void pollEvents() override {
+        XSetErrorHandler(onXError);
+        glfwPollEvents();
+        XSetErrorHandler(onXError);
+    }
+    bool shouldClose() const override {
+        if (xRequestFailed() && !glfwWindowShouldClose(window_)) {
+            std::cerr << "window: an X request failed (the window was destroyed from outside?); closing\n";
+            glfwSetWindowShouldClose(window_, GLFW_TRUE);
+        }
+        return glfwWindowShouldClose(window_) == GLFW_TRUE;
+    }
     void framebufferSize(int& width, int& height) const override { glfwGetFramebufferSize(window_, &width, &height); }
     void requestSize(int width, int height) override {
         if (width == 0 || height == 0) {

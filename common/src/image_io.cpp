@@ -14,12 +14,18 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wshadow"
 #pragma GCC diagnostic ignored "-Wconversion"
+#include <Iex.h>
 #include <ImfArray.h>
+#include <ImfChannelList.h>
+#include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfRgbaFile.h>
+#include <ImfStdIO.h>
 #pragma GCC diagnostic pop
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -36,19 +42,10 @@ namespace t10 {
 namespace {
 
 // The largest side accepted when reading EXR or PFM: far beyond any render here, small enough that
-// width * height * channels cannot overflow.
+// width * height * channels cannot overflow. The GL context's own limit (ExrLimits) is lower.
 constexpr long long kMaxReadSide = 65536;
 
 [[noreturn]] void fail(const std::string& path, const std::string& fault) { throw Error(path + ": " + fault); }
-
-using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
-
-FilePtr openFile(const std::string& path, const char* mode) {
-    errno = 0;
-    FilePtr file(std::fopen(path.c_str(), mode), &std::fclose);
-    if (!file) fail(path, std::string("cannot open file: ") + std::strerror(errno));
-    return file;
-}
 
 std::vector<std::uint8_t> readFileBytes(const std::string& path) {
     std::vector<std::uint8_t> bytes;
@@ -85,6 +82,123 @@ float getFloat(const std::uint8_t* in, bool littleEndian) {
     return value;
 }
 
+// An OpenEXR input stream over bytes already in memory (the file, read by readFile, or fuzz data).
+class MemoryIStream final : public Imf::IStream {
+public:
+    MemoryIStream(const std::uint8_t* bytes, std::size_t size, const std::string& name)
+        : Imf::IStream(name.c_str()), bytes_(bytes), size_(size) {}
+    bool read(char c[], int n) override {
+        if (n < 0 || static_cast<std::uint64_t>(n) > size_ - pos_) throw Iex::InputExc("unexpected end of file");
+        if (n > 0) std::memcpy(c, bytes_ + pos_, static_cast<std::size_t>(n));
+        pos_ += static_cast<std::size_t>(n);
+        return pos_ < size_;
+    }
+    std::uint64_t tellg() override { return pos_; }
+    void seekg(std::uint64_t pos) override {
+        if (pos > size_) throw Iex::InputExc("seek past the end of file");
+        pos_ = static_cast<std::size_t>(pos);
+    }
+
+private:
+    const std::uint8_t* bytes_;
+    std::size_t size_;
+    std::size_t pos_ = 0;
+};
+
+// What checkHeaders() learns from an EXR's first header.
+struct ExrShape {
+    long long width = 0;
+    long long height = 0;
+};
+
+std::uint32_t getU32Le(const std::uint8_t* p) {
+    return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+           static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+}
+
+std::int32_t getI32Le(const std::uint8_t* p) {
+    const std::uint32_t bits = getU32Le(p);
+    std::int32_t value = 0;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+}
+
+// Walks the EXR headers before OpenEXR sees them, because OpenEXR trusts their sizes: it allocates
+// an attribute of unknown type by its declared size (2 GB from a 300-byte file, found by the fuzz
+// target) and a tile offset table by the declared tile count. Refuses an attribute larger than the
+// rest of the file, more tiles than the file has room for offsets, deep data, and a data window
+// beyond `limits`; returns the first header's data window size.
+ExrShape checkHeaders(const std::uint8_t* bytes, std::size_t size, const std::string& name, const ExrLimits& limits) {
+    constexpr std::uint32_t kMagic = 20000630;
+    constexpr std::uint32_t kLongNames = 0x400, kDeep = 0x800, kMultiPart = 0x1000;
+    if (size < 8 || getU32Le(bytes) != kMagic) fail(name, "not an OpenEXR file");
+    const std::uint32_t flags = getU32Le(bytes + 4);
+    if (flags & kDeep) fail(name, "deep EXR data is not supported");
+    const std::size_t maxName = (flags & kLongNames) ? 256 : 32;
+    std::size_t pos = 8;
+    auto cString = [&](const char* what) {
+        const std::size_t start = pos;
+        while (pos < size && bytes[pos] != 0 && pos - start < maxName) ++pos;
+        if (pos >= size || bytes[pos] != 0) fail(name, std::string("EXR header truncated or malformed (") + what + ")");
+        std::string text(reinterpret_cast<const char*>(bytes) + start, pos++ - start);
+        for (char& c : text) c = (c >= 0x20 && c < 0x7F) ? c : '?'; // it may end up in a message
+        return text;
+    };
+    ExrShape shape;
+    bool first = true;
+    for (;;) { // one header, or several (multi-part) ended by an empty one
+        if (pos >= size) fail(name, "EXR header truncated");
+        if (bytes[pos] == 0) { ++pos; break; }
+        long long tileW = 0, tileH = 0;
+        while (pos < size && bytes[pos] != 0) {
+            const std::string attribute = cString("attribute name");
+            const std::string type = cString("attribute type");
+            if (size - pos < 4) fail(name, "EXR header truncated (attribute " + attribute + ")");
+            const std::int32_t length = getI32Le(bytes + pos);
+            pos += 4;
+            if (length < 0 || static_cast<std::size_t>(length) > size - pos)
+                fail(name, "EXR attribute " + attribute + " declares " + std::to_string(length) +
+                               " bytes, more than the file holds");
+            if (first && attribute == "dataWindow" && type == "box2i" && length == 16) {
+                shape.width = static_cast<long long>(getI32Le(bytes + pos + 8)) - getI32Le(bytes + pos) + 1;
+                shape.height = static_cast<long long>(getI32Le(bytes + pos + 12)) - getI32Le(bytes + pos + 4) + 1;
+            }
+            if (attribute == "tiles" && type == "tiledesc" && length >= 8) {
+                tileW = getU32Le(bytes + pos);
+                tileH = getU32Le(bytes + pos + 4);
+            }
+            pos += static_cast<std::size_t>(length);
+        }
+        if (pos >= size) fail(name, "EXR header truncated");
+        ++pos; // the empty name that ends this header
+        if (first && (shape.width <= 0 || shape.height <= 0 || shape.width > kMaxReadSide || shape.height > kMaxReadSide))
+            fail(name, "unsupported EXR data window " + std::to_string(shape.width) + "x" + std::to_string(shape.height));
+        if (first && (shape.width > limits.maxSide || shape.height > limits.maxSide))
+            fail(name, "the image is " + std::to_string(shape.width) + "x" + std::to_string(shape.height) +
+                           ", larger than " + std::to_string(limits.maxSide) + " on a side (" + limits.maxSideReason + ")");
+        if (first && static_cast<std::uint64_t>(shape.width) * static_cast<std::uint64_t>(shape.height) > limits.maxPixels)
+            fail(name, "the image is " + std::to_string(shape.width) + "x" + std::to_string(shape.height) +
+                           ", more than " + std::to_string(limits.maxPixels) + " pixels (" + limits.maxPixelsReason + ")");
+        // Every tile of the first level has an 8-byte offset in the file: more tiles than that is a lie.
+        if (tileW > 0 && tileH > 0 && first) {
+            const std::uint64_t tiles = static_cast<std::uint64_t>((shape.width + tileW - 1) / tileW) *
+                                        static_cast<std::uint64_t>((shape.height + tileH - 1) / tileH);
+            if (tiles > size / 8) fail(name, "EXR declares " + std::to_string(tiles) + " tiles, more than the file holds");
+        }
+        first = false;
+        if (!(flags & kMultiPart)) break;
+    }
+    if (shape.width <= 0) fail(name, "EXR header has no data window");
+    return shape;
+}
+
+std::string channelNames(const Imf::Header& header) {
+    std::string names;
+    for (auto it = header.channels().begin(); it != header.channels().end(); ++it)
+        names += (names.empty() ? "" : ", ") + std::string(it.name());
+    return names.empty() ? "none" : names;
+}
+
 } // namespace
 
 void writePng(const std::string& path, const Image8& image) {
@@ -95,9 +209,17 @@ void writePng(const std::string& path, const Image8& image) {
     for (int y = 0; y < image.height; ++y)
         std::memcpy(topFirst.data() + static_cast<std::size_t>(y) * rowBytes,
                     image.data.data() + static_cast<std::size_t>(image.height - 1 - y) * rowBytes, rowBytes);
-    if (!stbi_write_png(path.c_str(), image.width, image.height, image.channels, topFirst.data(),
-                        static_cast<int>(rowBytes)))
-        fail(path, "cannot write PNG (is the directory there and writable?)");
+    // Encoded in memory, then written all or nothing: stb's own file writer ignores fwrite's result.
+    std::vector<std::uint8_t> encoded;
+    const auto append = [](void* context, void* data, int size) {
+        auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+        const auto* bytes = static_cast<const std::uint8_t*>(data);
+        out->insert(out->end(), bytes, bytes + size);
+    };
+    if (!stbi_write_png_to_func(append, &encoded, image.width, image.height, image.channels, topFirst.data(),
+                                static_cast<int>(rowBytes)))
+        fail(path, "cannot encode PNG");
+    writeFileAtomically(path, encoded.data(), encoded.size(), "PNG");
 }
 
 Image8 readPng(const std::string& path) {
@@ -136,25 +258,47 @@ void writeExr(const std::string& path, const ImageF& image) {
             p.a = c == 4 ? image.at(x, src, 3) : 1.0f;
         }
     }
+    // Encoded in memory, then written all or nothing (OpenEXR's file writer leaves a partial file).
+    std::string encoded;
     try {
-        Imf::RgbaOutputFile file(path.c_str(), w, h, Imf::WRITE_RGBA);
-        file.setFrameBuffer(&pixels[0][0], 1, static_cast<std::size_t>(w));
-        file.writePixels(h);
+        Imf::StdOSStream stream;
+        {
+            Imf::RgbaOutputFile file(stream, Imf::Header(w, h), Imf::WRITE_RGBA);
+            file.setFrameBuffer(&pixels[0][0], 1, static_cast<std::size_t>(w));
+            file.writePixels(h);
+        } // the destructor writes the line offset table
+        encoded = stream.str();
     } catch (const std::exception& e) {
-        fail(path, std::string("cannot write EXR: ") + e.what());
+        fail(path, std::string("cannot encode EXR: ") + e.what());
     }
+    writeFileAtomically(path, encoded.data(), encoded.size(), "EXR");
 }
 
-ImageF readExr(const std::string& path) {
-    // OpenEXR's message for a missing file is long-winded; say it the way the other readers do.
-    openFile(path, "rb");
+ImageF readExr(const std::string& path, const ExrLimits& limits) {
+    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    return decodeExr(bytes.data(), bytes.size(), path, limits);
+}
+
+ImageF decodeExr(const std::uint8_t* bytes, std::size_t size, const std::string& name, const ExrLimits& limits) {
+    if (bytes == nullptr) size = 0;
     try {
-        Imf::RgbaInputFile file(path.c_str());
+        // OpenEXR allocates its chunk offset table from the header before we see the size: its own
+        // limit (process-wide, the same for every call) keeps that table small for a hostile header.
+        Imf::Header::setMaxImageSize(static_cast<int>(kMaxReadSide), static_cast<int>(kMaxReadSide));
+        Imf::Header::setMaxTileSize(static_cast<int>(kMaxReadSide), static_cast<int>(kMaxReadSide));
+        // Every check comes before OpenEXR allocates anything, and before the pixels are allocated.
+        const ExrShape shape = checkHeaders(bytes, size, name, limits);
+        MemoryIStream stream(bytes, size, name);
+        Imf::RgbaInputFile file(stream, 1);
         const Imath::Box2i window = file.dataWindow();
         const long long w = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long h = static_cast<long long>(window.max.y) - window.min.y + 1;
-        if (w <= 0 || h <= 0 || w > kMaxReadSide || h > kMaxReadSide)
-            fail(path, "unsupported EXR data window " + std::to_string(w) + "x" + std::to_string(h));
+        if (w != shape.width || h != shape.height)
+            fail(name, "EXR data window " + std::to_string(w) + "x" + std::to_string(h) + " is not the header's");
+        // A file with only depth, alpha or layered channels would render black without a word.
+        if ((file.channels() & (Imf::WRITE_RGB | Imf::WRITE_Y)) == 0)
+            fail(name, "the EXR has no colour (R, G, B) or luminance (Y) channel (its channels: " +
+                           channelNames(file.header()) + ")");
         const int width = static_cast<int>(w), height = static_cast<int>(h);
         Imf::Array2D<Imf::Rgba> pixels(height, width);
         // OpenEXR addresses the buffer by file coordinates: hand it the address of pixel (0, 0),
@@ -181,8 +325,24 @@ ImageF readExr(const std::string& path) {
     } catch (const Error&) {
         throw;
     } catch (const std::exception& e) {
-        fail(path, std::string("cannot read EXR: ") + e.what());
+        fail(name, std::string("cannot read EXR: ") + e.what());
     }
+}
+
+std::size_t clampNonFinite(ImageF& image, float maximum) {
+    const std::size_t channels = static_cast<std::size_t>(std::max(image.channels, 1));
+    std::size_t pixels = 0;
+    for (std::size_t i = 0; i < image.data.size(); i += channels) {
+        bool changed = false;
+        for (std::size_t c = i; c < i + channels && c < image.data.size(); ++c) {
+            float& v = image.data[c];
+            if (std::isfinite(v)) continue;
+            v = v > 0.0f ? maximum : 0.0f; // NaN compares false: 0 like -infinity
+            changed = true;
+        }
+        pixels += changed ? 1 : 0;
+    }
+    return pixels;
 }
 
 // A 4-channel image is written as "PF" (RGB): PFM has no alpha, so alpha is dropped.
@@ -200,10 +360,7 @@ void writePfm(const std::string& path, const ImageF& image) {
         for (int c = 0; c < fileChannels; ++c, out += 4)
             putFloatLe(image.data[i * static_cast<std::size_t>(image.channels) + static_cast<std::size_t>(c)], out);
 
-    FilePtr file = openFile(path, "wb");
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
-    const bool closed = std::fclose(file.release()) == 0;
-    if (!written || !closed) fail(path, std::string("cannot write PFM: ") + std::strerror(errno));
+    writeFileAtomically(path, bytes.data(), bytes.size(), "PFM");
 }
 
 ImageF readPfm(const std::string& path) {

@@ -3,11 +3,12 @@
 #include "t10/shader.hpp"
 
 #include "t10/error.hpp"
+#include "t10/file.hpp"
 #include "t10/gl_object.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
+#include <cstdint>
+#include <vector>
 
 namespace t10 {
 
@@ -25,11 +26,10 @@ GLenum stageFromExtension(const std::filesystem::path& file) {
 }
 
 std::string readText(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) throw Error(file.string() + ": cannot open shader file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    std::vector<std::uint8_t> bytes;
+    std::string fault;
+    if (!readFile(file.string(), bytes, fault)) throw Error(file.string() + ": shader " + fault);
+    return std::string(bytes.begin(), bytes.end());
 }
 
 std::string shaderLog(GLuint shader) {

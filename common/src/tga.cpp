@@ -1,8 +1,8 @@
 // TGA loader used for the scene's textures and by the tga2png tool: true-colour and grey images,
 // raw and run-length encoded (types 2, 3, 10, 11), 8/24/32 bits per pixel, either vertical origin.
-// Everything in the header is validated before a single pixel is allocated, and every read is
-// bounds-checked, so a malformed file gives "<name>: <fault>" instead of a crash or a huge
-// allocation. Right-to-left files (descriptor bit 4) are rejected: no common writer produces them.
+// Everything in the header is validated before a single pixel is allocated, every read is
+// bounds-checked, and an RLE image grows as its packets decode, so a malformed file gives
+// "<name>: <fault>" instead of a crash or a huge allocation. Right-to-left files (descriptor bit 4) are rejected: no common writer produces them.
 #include "t10/tga.hpp"
 
 #include "t10/file.hpp"
@@ -21,6 +21,8 @@ namespace {
 
 constexpr std::size_t kHeaderSize = 18;
 constexpr std::size_t kMaxRlePacketPixels = 128;
+// What the RLE decoder reserves before the first packet; it grows from there as packets decode.
+constexpr std::size_t kRleInitialBytes = std::size_t{1} << 20;
 
 // Image types (TGA 2.0 specification, field 3).
 constexpr int kTypeNoImage = 0;
@@ -45,8 +47,13 @@ TgaResult fail(const std::string& name, const std::string& fault) {
 
 // Decodes the RLE stream starting at `pos` into `out` (pixelCount pixels of `bpp` bytes, file
 // order). Packets may cross scan lines: TGA 1.0 writers did that, and it costs nothing to allow.
+// `out` grows as packets decode, so a stream that goes wrong early never costs the declared size:
+// a 10 MB file may declare 16384 x 16384 x 4 bytes (1 GiB) and be invalid from its first packet.
 std::string decodeRle(const std::uint8_t* bytes, std::size_t size, std::size_t pos, std::size_t bpp,
-                      std::size_t pixelCount, std::uint8_t* out) {
+                      std::size_t pixelCount, std::vector<std::uint8_t>& out) {
+    const std::size_t total = pixelCount * bpp;
+    out.clear();
+    out.reserve(std::min(total, kRleInitialBytes));
     std::size_t done = 0;
     while (done < pixelCount) {
         if (pos >= size) return "RLE data truncated (" + std::to_string(done) + " of " +
@@ -54,14 +61,17 @@ std::string decodeRle(const std::uint8_t* bytes, std::size_t size, std::size_t p
         const std::uint8_t packet = bytes[pos++];
         const std::size_t count = (packet & 0x7Fu) + 1u;
         if (count > pixelCount - done) return "RLE packet runs past the end of the image";
-        std::uint8_t* dst = out + done * bpp;
-        if (packet & 0x80u) { // run-length packet: one pixel value repeated
-            if (size - pos < bpp) return "RLE data truncated (run packet value missing)";
-            for (std::size_t i = 0; i < count; ++i) std::memcpy(dst + i * bpp, bytes + pos, bpp);
+        const bool run = (packet & 0x80u) != 0;
+        if (size - pos < (run ? bpp : count * bpp))
+            return run ? "RLE data truncated (run packet value missing)" : "RLE data truncated (raw packet pixels missing)";
+        // Double the capacity when full (never past the image): at most 1.5 x the image at once.
+        const std::size_t needed = out.size() + count * bpp;
+        if (needed > out.capacity()) out.reserve(std::min(total, std::max(needed, out.capacity() * 2)));
+        if (run) { // run-length packet: one pixel value repeated
+            for (std::size_t i = 0; i < count; ++i) out.insert(out.end(), bytes + pos, bytes + pos + bpp);
             pos += bpp;
         } else { // raw packet: `count` literal pixels
-            if (size - pos < count * bpp) return "RLE data truncated (raw packet pixels missing)";
-            std::memcpy(dst, bytes + pos, count * bpp);
+            out.insert(out.end(), bytes + pos, bytes + pos + count * bpp);
             pos += count * bpp;
         }
         done += count;
@@ -148,14 +158,19 @@ TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::stri
 
     // Decode in file order (BGR(A) or grey), then reorder channels and rows in place.
     TgaResult result;
-    result.image = Image8(width, height, static_cast<int>(bpp));
-    std::uint8_t* out = result.image.data.data();
     if (rle) {
-        std::string fault = decodeRle(bytes, size, pos, bpp, pixelCount, out);
+        std::vector<std::uint8_t> decoded;
+        std::string fault = decodeRle(bytes, size, pos, bpp, pixelCount, decoded);
         if (!fault.empty()) return fail(name, fault);
+        result.image.width = width;
+        result.image.height = height;
+        result.image.channels = static_cast<int>(bpp);
+        result.image.data = std::move(decoded);
     } else {
-        std::memcpy(out, bytes + pos, pixelCount * bpp);
+        result.image = Image8(width, height, static_cast<int>(bpp));
+        std::memcpy(result.image.data.data(), bytes + pos, pixelCount * bpp);
     }
+    std::uint8_t* out = result.image.data.data();
     if (bpp >= 3)
         for (std::size_t i = 0; i < pixelCount; ++i) std::swap(out[i * bpp], out[i * bpp + 2]); // BGR -> RGB
     if (descriptor & kDescriptorTopToBottom) { // top-left origin: make row 0 the bottom row

@@ -29,6 +29,7 @@ struct Options {
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
     bool verbose = false;
+    bool keepNonFinite = false;     // --keep-non-finite: NaN and infinity of --input reach the stage as they are
 };
 
 // Adds stage-specific options to the parser (extras/); may be empty.

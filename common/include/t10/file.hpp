@@ -1,5 +1,7 @@
-// Reading a whole file into memory, with the reason when it cannot be read.
+// Whole files: reading one into memory with the reason when it cannot be read, and writing one so
+// that it is either complete or not there at all (a temporary file in the same folder, renamed).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,5 +11,11 @@ namespace t10 {
 // Reads `path` into `bytes`. On failure returns false and sets `fault` to the reason, e.g.
 // "cannot open file: No such file or directory" (without the path: callers put it in front).
 bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& fault);
+
+// Writes `size` bytes to `path` through a temporary file next to it, checking every write and the
+// close, then renames it into place. On failure the temporary file is removed, a file that was at
+// `path` before is left as it was, and t10::Error is thrown with "<path>: cannot write <what>: <the
+// system's reason>". `what` names the format in the message ("PNG", "EXR", ...).
+void writeFileAtomically(const std::string& path, const void* data, std::size_t size, const std::string& what);
 
 } // namespace t10

@@ -1,0 +1,55 @@
+/* Destroys, from another X client, the first top-level window whose name starts with NAME (waiting
+ * up to SECONDS for it to appear): what a misbehaving window manager or `xdotool windowkill`-like
+ * tools do, and what once ended the stages with Xlib's BadDrawable.
+ * usage: x_destroy_window NAME SECONDS */
+#include <X11/Xlib.h>
+#include <X11/Xutil.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static Window findNamed(Display* display, Window window, const char* prefix) {
+    char* name = NULL;
+    if (XFetchName(display, window, &name) && name != NULL) {
+        const int match = strncmp(name, prefix, strlen(prefix)) == 0;
+        XFree(name);
+        if (match) return window;
+    }
+    Window root, parent, *children = NULL;
+    unsigned int count = 0;
+    Window found = 0;
+    if (XQueryTree(display, window, &root, &parent, &children, &count)) {
+        for (unsigned int i = 0; i < count && !found; ++i) found = findNamed(display, children[i], prefix);
+        if (children) XFree(children);
+    }
+    return found;
+}
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        fprintf(stderr, "usage: x_destroy_window NAME SECONDS\n");
+        return 2;
+    }
+    Display* display = XOpenDisplay(NULL);
+    if (display == NULL) {
+        fprintf(stderr, "x_destroy_window: cannot open the display\n");
+        return 1;
+    }
+    const int tries = atoi(argv[2]) * 10;
+    for (int i = 0; i < tries; ++i) {
+        const Window window = findNamed(display, DefaultRootWindow(display), argv[1]);
+        if (window) {
+            usleep(500000); /* let it render a few frames first */
+            XDestroyWindow(display, window);
+            XSync(display, False);
+            printf("x_destroy_window: destroyed window 0x%lx (%s)\n", (unsigned long)window, argv[1]);
+            XCloseDisplay(display);
+            return 0;
+        }
+        usleep(100000);
+    }
+    fprintf(stderr, "x_destroy_window: no window named %s*\n", argv[1]);
+    XCloseDisplay(display);
+    return 1;
+}
