@@ -65,7 +65,8 @@ catch_discover_tests(t10_extras_tests TEST_SPEC "~[window]" TEST_PREFIX "extras:
 
 # --- Step 40: a non-finite scene key is reported, once. -------------------------------------------
 # inf.exr / nan.exr put a non-finite log luminance into the GL_R16F chain (what the faulty hardware
-# of exercise 40 produces); three frames must give exactly one warning. GL_R16 clamps it: no warning.
+# of exercise 40 produces; --keep-non-finite passes the pixels on, where --input would clamp them);
+# three frames must give exactly one warning. GL_R16 clamps it: no warning.
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/extras_key_warning.sh [=[
 #!/bin/sh
 # usage: extras_key_warning.sh EXPECTED_COUNT EXTRAS_ARGS...
@@ -81,10 +82,10 @@ echo "exit code $rc, $count warning(s), expected $expected"
 foreach(input inf nan)
     add_test(NAME "extras: r16f with a ${input} pixel warns once about the key"
              COMMAND sh ${CMAKE_CURRENT_BINARY_DIR}/extras_key_warning.sh 1 ${BIN}/extras --headless --backend egl
-                     --frames 3 --input ${DUMPS}/inputs/${input}.exr --luminance-format r16f)
+                     --frames 3 --input ${DUMPS}/inputs/${input}.exr --keep-non-finite --luminance-format r16f)
     add_test(NAME "extras: r16 with a ${input} pixel keeps a finite key"
              COMMAND sh ${CMAKE_CURRENT_BINARY_DIR}/extras_key_warning.sh 0 ${BIN}/extras --headless --backend egl
-                     --frames 3 --input ${DUMPS}/inputs/${input}.exr)
+                     --frames 3 --input ${DUMPS}/inputs/${input}.exr --keep-non-finite)
     set_tests_properties("extras: r16f with a ${input} pixel warns once about the key"
                          "extras: r16 with a ${input} pixel keeps a finite key"
                          PROPERTIES FIXTURES_REQUIRED inputs)

@@ -99,7 +99,7 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
             throw UsageError("--headless contradicts --backend window");
         }
         // An empty value is refused rather than read as "not given".
-        for (const CLI::Option* option : {outputOption, exrOption, dumpOption, resizeOption}) {
+        for (const CLI::Option* option : {sizeOption, outputOption, exrOption, dumpOption, resizeOption}) {
             if (option->count() > 0 && option->as<std::string>().empty())
                 throw UsageError(option->get_name() + ": the value is empty");
         }

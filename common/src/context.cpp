@@ -94,8 +94,10 @@ public:
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(1);
         loadGl(glfwGetProcAddress, "window");
+        XSetErrorHandler(onXError);
     }
     ~WindowContext() override {
+        XSetErrorHandler(onXError);
         glfwDestroyWindow(window_);
         glfwTerminate();
     }
@@ -104,7 +106,7 @@ public:
     bool isWindow() const override { return true; }
     GLFWwindow* window() const override { return window_; }
     // GLFW 3.3 puts Xlib's default handler back after some of its own calls: ours is installed
-    // again around the calls that talk to the X server every frame.
+    // again before every call that talks to the X server.
     void swapBuffers() override {
         XSetErrorHandler(onXError);
         glfwSwapBuffers(window_);
@@ -121,8 +123,13 @@ public:
         }
         return glfwWindowShouldClose(window_) == GLFW_TRUE;
     }
-    void framebufferSize(int& width, int& height) const override { glfwGetFramebufferSize(window_, &width, &height); }
+    void framebufferSize(int& width, int& height) const override {
+        XSetErrorHandler(onXError);
+        glfwGetFramebufferSize(window_, &width, &height);
+        if (xRequestFailed()) width = height = 0; // the window is gone: nothing to render into
+    }
     void requestSize(int width, int height) override {
+        XSetErrorHandler(onXError);
         if (width == 0 || height == 0) {
             glfwIconifyWindow(window_);
         } else {
@@ -130,7 +137,10 @@ public:
             glfwSetWindowSize(window_, width, height);
         }
     }
-    void setTitle(const std::string& title) override { glfwSetWindowTitle(window_, title.c_str()); }
+    void setTitle(const std::string& title) override {
+        XSetErrorHandler(onXError);
+        glfwSetWindowTitle(window_, title.c_str());
+    }
 
 private:
     GLFWwindow* window_ = nullptr;

@@ -52,8 +52,8 @@ TgaResult fail(const std::string& name, const std::string& fault) {
 std::string decodeRle(const std::uint8_t* bytes, std::size_t size, std::size_t pos, std::size_t bpp,
                       std::size_t pixelCount, std::vector<std::uint8_t>& out) {
     const std::size_t total = pixelCount * bpp;
-    out.clear();
-    out.reserve(std::min(total, kRleInitialBytes));
+    out.assign(std::min(total, kRleInitialBytes), 0);
+    std::size_t used = 0; // bytes decoded so far; out.size() is the room for them
     std::size_t done = 0;
     while (done < pixelCount) {
         if (pos >= size) return "RLE data truncated (" + std::to_string(done) + " of " +
@@ -64,16 +64,17 @@ std::string decodeRle(const std::uint8_t* bytes, std::size_t size, std::size_t p
         const bool run = (packet & 0x80u) != 0;
         if (size - pos < (run ? bpp : count * bpp))
             return run ? "RLE data truncated (run packet value missing)" : "RLE data truncated (raw packet pixels missing)";
-        // Double the capacity when full (never past the image): at most 1.5 x the image at once.
-        const std::size_t needed = out.size() + count * bpp;
-        if (needed > out.capacity()) out.reserve(std::min(total, std::max(needed, out.capacity() * 2)));
+        // Double the room when full (never past the image): at most 1.5 x the image at once.
+        if (used + count * bpp > out.size()) out.resize(std::min(total, std::max(used + count * bpp, out.size() * 2)));
+        std::uint8_t* dst = out.data() + used;
         if (run) { // run-length packet: one pixel value repeated
-            for (std::size_t i = 0; i < count; ++i) out.insert(out.end(), bytes + pos, bytes + pos + bpp);
+            for (std::size_t i = 0; i < count; ++i) std::memcpy(dst + i * bpp, bytes + pos, bpp);
             pos += bpp;
         } else { // raw packet: `count` literal pixels
-            out.insert(out.end(), bytes + pos, bytes + pos + count * bpp);
+            std::memcpy(dst, bytes + pos, count * bpp);
             pos += count * bpp;
         }
+        used += count * bpp;
         done += count;
     }
     return {};

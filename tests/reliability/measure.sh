@@ -9,7 +9,8 @@ shift 4
 stats=$(mktemp)
 output=$(/usr/bin/time -f '%e %M' -o "$stats" "$@" 2>&1)
 rc=$?
-read -r seconds kib <"$stats"
+# GNU time puts "Command exited with non-zero status N" before the format line.
+read -r seconds kib < <(tail -n 1 "$stats")
 rm -f "$stats"
 mib=$((kib / 1024))
 printf '%s\n' "$output"

@@ -1,7 +1,9 @@
 /* Destroys, from another X client, the first top-level window whose name starts with NAME (waiting
  * up to SECONDS for it to appear): what a misbehaving window manager or `xdotool windowkill`-like
  * tools do, and what once ended the stages with Xlib's BadDrawable.
- * usage: x_destroy_window NAME SECONDS */
+ * DELAY_MS (default 500) after the window appears: short, to hit the stage while it starts up;
+ * long, to hit it in its frame loop.
+ * usage: x_destroy_window NAME SECONDS [DELAY_MS] */
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <stdio.h>
@@ -27,8 +29,8 @@ static Window findNamed(Display* display, Window window, const char* prefix) {
 }
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        fprintf(stderr, "usage: x_destroy_window NAME SECONDS\n");
+    if (argc != 3 && argc != 4) {
+        fprintf(stderr, "usage: x_destroy_window NAME SECONDS [DELAY_MS]\n");
         return 2;
     }
     Display* display = XOpenDisplay(NULL);
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
     for (int i = 0; i < tries; ++i) {
         const Window window = findNamed(display, DefaultRootWindow(display), argv[1]);
         if (window) {
-            usleep(500000); /* let it render a few frames first */
+            usleep((useconds_t)(argc == 4 ? atoi(argv[3]) : 500) * 1000u);
             XDestroyWindow(display, window);
             XSync(display, False);
             printf("x_destroy_window: destroyed window 0x%lx (%s)\n", (unsigned long)window, argv[1]);
