@@ -123,11 +123,55 @@ std::int32_t getI32Le(const std::uint8_t* p) {
     return value;
 }
 
-// Walks the EXR headers before OpenEXR sees them, because OpenEXR trusts their sizes: it allocates
-// an attribute of unknown type by its declared size (2 GB from a 300-byte file, found by the fuzz
-// target) and a tile offset table by the declared tile count. Refuses an attribute larger than the
-// rest of the file, more tiles than the file has room for offsets, deep data, and a data window
-// beyond `limits`; returns the first header's data window size.
+// The size a fixed-size EXR attribute type must declare, or 0 for the variable-size ones.
+std::size_t fixedAttributeSize(const std::string& type) {
+    static const std::pair<const char*, std::size_t> kSizes[] = {
+        {"box2i", 16}, {"box2f", 16}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12},
+        {"v3d", 24}, {"int", 4}, {"float", 4}, {"double", 8}, {"compression", 1}, {"lineOrder", 1},
+        {"envmap", 1}, {"deepImageState", 1}, {"tiledesc", 9}, {"chromaticities", 32}, {"keycode", 28},
+        {"timecode", 8}, {"rational", 8}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}};
+    for (const auto& [name, size] : kSizes)
+        if (type == name) return size;
+    return 0;
+}
+
+// Whether a variable-size attribute's value fills exactly its declared `size` bytes at `p`, the
+// way OpenEXR will parse it (it parses by type, not by the declared size).
+bool variableAttributeFits(const std::string& type, const std::uint8_t* p, std::size_t size) {
+    if (type == "chlist") { // (name, 0, int32 type, uint8 linear, 3 reserved, int32 xs, int32 ys)..., 0
+        std::size_t pos = 0;
+        while (pos < size && p[pos] != 0) {
+            while (pos < size && p[pos] != 0) ++pos;
+            pos += 1 + 16;
+        }
+        return pos + 1 == size;
+    }
+    if (type == "preview") { // uint32 width, uint32 height, width x height RGBA bytes
+        if (size < 8) return false;
+        return static_cast<std::uint64_t>(getU32Le(p)) * getU32Le(p + 4) * 4u == size - 8;
+    }
+    if (type == "stringvector") { // (int32 length, bytes)...
+        std::size_t pos = 0;
+        while (pos < size) {
+            if (size - pos < 4) return false;
+            const std::uint32_t length = getU32Le(p + pos);
+            pos += 4;
+            if (length > size - pos) return false;
+            pos += length;
+        }
+        return true;
+    }
+    return true; // string, floatvector and unknown types are read by their declared size
+}
+
+// Walks the EXR headers before OpenEXR sees them, because OpenEXR trusts what they declare: it
+// allocates an attribute of unknown type by its declared size (2 GB from a 300-byte file, found by
+// the fuzz target), parses known types by type whatever size they declare (then reads the rest of
+// the header out of step: another 2 GB, also found by the fuzz target), sizes a preview image by its
+// declared width and height, and a tile offset table by the declared tile count. Refuses an
+// attribute larger than the rest of the file or not of its type's size, more tiles than the file
+// has room for offsets, deep data, and a data window beyond `limits`; returns the first header's
+// data window size.
 ExrShape checkHeaders(const std::uint8_t* bytes, std::size_t size, const std::string& name, const ExrLimits& limits) {
     constexpr std::uint32_t kMagic = 20000630;
     constexpr std::uint32_t kLongNames = 0x400, kDeep = 0x800, kMultiPart = 0x1000;
@@ -159,6 +203,11 @@ ExrShape checkHeaders(const std::uint8_t* bytes, std::size_t size, const std::st
             if (length < 0 || static_cast<std::size_t>(length) > size - pos)
                 fail(name, "EXR attribute " + attribute + " declares " + std::to_string(length) +
                                " bytes, more than the file holds");
+            const std::size_t fixed = fixedAttributeSize(type);
+            if ((fixed != 0 && static_cast<std::size_t>(length) != fixed) ||
+                (fixed == 0 && !variableAttributeFits(type, bytes + pos, static_cast<std::size_t>(length))))
+                fail(name, "EXR attribute " + attribute + " of type " + type + " is malformed (" +
+                               std::to_string(length) + " bytes)");
             if (first && attribute == "dataWindow" && type == "box2i" && length == 16) {
                 shape.width = static_cast<long long>(getI32Le(bytes + pos + 8)) - getI32Le(bytes + pos) + 1;
                 shape.height = static_cast<long long>(getI32Le(bytes + pos + 12)) - getI32Le(bytes + pos + 4) + 1;
