@@ -2,7 +2,7 @@
 // RMS radius of the bloom texture's luminance around its centroid, in full-resolution pixels:
 // sqrt(sum(Y r^2) / sum(Y)). The bloom is read from the level the final pass reads: level 1 (half
 // resolution, texel centres scaled by 2) after one or more blur passes, level 0 with none.
-// Used by extras/bench_passes.sh on the hot-pixel input (tests/tools/make_test_images).
+// Used by tools/bench_passes/bench_passes.sh on the hot-pixel input (tools/make_test_images).
 // usage: halo_radius DUMP_DIR BLUR_PASSES
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
