@@ -1,9 +1,13 @@
 // Loading the numeric-test dumps and measuring 8-bit differences; see dumps.hpp.
 #include "dumps.hpp"
 
+#include "compare.hpp"
+
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -46,23 +50,33 @@ ByteError byteError(const Image8& a, const Image8& b) {
     if (a.width != b.width || a.height != b.height || a.channels != b.channels) {
         throw Error("byteError: images differ in size");
     }
+    const ImageDifference difference = imageDifference(a, b, 1);
     ByteError error;
-    double sum = 0.0;
-    std::size_t overOne = 0;
-    const std::size_t pixels = static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height);
-    for (std::size_t p = 0; p < pixels; ++p) {
-        int worst = 0;
-        for (int c = 0; c < a.channels; ++c) {
-            const std::size_t i = p * static_cast<std::size_t>(a.channels) + static_cast<std::size_t>(c);
-            const int d = std::abs(int(a.data[i]) - int(b.data[i]));
-            worst = std::max(worst, d);
-            sum += d;
-        }
-        error.max = std::max(error.max, worst);
-        if (worst > 1) ++overOne;
+    error.max = difference.maxError;
+    error.mean = difference.meanError;
+    error.fractionOverOne = difference.fractionOverThreshold;
+    return error;
+}
+
+LevelError compareLevels(const ImageF& gpu, const ImageF& cpu) {
+    if (gpu.width != cpu.width || gpu.height != cpu.height || gpu.channels < 3 || cpu.channels < 3) {
+        throw Error("compareLevels: levels differ in size");
     }
-    error.mean = sum / double(pixels * static_cast<std::size_t>(a.channels));
-    error.fractionOverOne = double(overOne) / double(pixels);
+    LevelError error;
+    double peak[3] = {0.0, 0.0, 0.0};
+    for (int y = 0; y < cpu.height; ++y)
+        for (int x = 0; x < cpu.width; ++x)
+            for (int c = 0; c < 3; ++c) peak[c] = std::max(peak[c], double(cpu.at(x, y, c)));
+    double sum = 0.0;
+    for (int y = 0; y < cpu.height; ++y)
+        for (int x = 0; x < cpu.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                if (peak[c] == 0.0) continue;
+                const double e = std::abs(double(gpu.at(x, y, c)) - double(cpu.at(x, y, c))) / peak[c];
+                error.worstRelativeToPeak = std::max(error.worstRelativeToPeak, e);
+                sum += e;
+            }
+    error.meanRelativeToPeak = sum / (3.0 * cpu.width * cpu.height);
     return error;
 }
 

@@ -24,12 +24,21 @@ struct Dump {
 // Loads T10_DUMP_DIR/<name>; throws t10::Error naming what is missing.
 Dump loadDump(const std::string& name);
 
-// Max and mean absolute difference between two 8-bit RGB images of the same size, in 8-bit steps.
+// Max and mean absolute difference between two 8-bit RGB images of the same size, in 8-bit steps
+// (tools/imgcompare's imageDifference, the golden tests' metric); throws t10::Error if the sizes differ.
 struct ByteError {
     int max = 0;
     double mean = 0.0;
     double fractionOverOne = 0.0; // pixels with some channel off by more than one step
 };
 ByteError byteError(const Image8& a, const Image8& b);
+
+// Difference of two float RGB levels (GPU against CPU), relative to the CPU level's largest value
+// in each channel; throws t10::Error if the sizes differ.
+struct LevelError {
+    double worstRelativeToPeak = 0.0; // largest |gpu - cpu| / (largest cpu value of the channel)
+    double meanRelativeToPeak = 0.0;
+};
+LevelError compareLevels(const ImageF& gpu, const ImageF& cpu);
 
 } // namespace t10::test
