@@ -62,6 +62,16 @@ ImageF readTextureLevel(GLuint texture, int level, bool rgba) {
 }
 
 void TexelReadback::request(GLuint texture, int level) {
+    const TextureOnUnit0 bound(texture);
+    // Only a 1x1 level fits the one-float buffer (the last level of a full mip chain).
+    GLint width = 0;
+    GLint height = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
+    if (width != 1 || height != 1) {
+        throw Error("TexelReadback: level " + std::to_string(level) + " is " + std::to_string(width) + "x" +
+                    std::to_string(height) + ", not 1x1");
+    }
     Slot& slot = slots_[static_cast<std::size_t>(next_)];
     next_ = (next_ + 1) % kSlots;
     if (slot.fence != nullptr) {
@@ -76,18 +86,8 @@ void TexelReadback::request(GLuint texture, int level) {
         glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer);
         glBufferData(GL_PIXEL_PACK_BUFFER, sizeof(float), nullptr, GL_STREAM_READ);
     }
-    // Only a 1x1 level fits the one-float buffer (the last level of a full mip chain).
     glBindBuffer(GL_PIXEL_PACK_BUFFER, slot.buffer);
-    GLint width = 0;
-    GLint height = 0;
-    {
-        const TextureOnUnit0 bound(texture);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
-        glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
-        if (width * height != 1) throw Error("TexelReadback: level " + std::to_string(level) + " is " +
-                                             std::to_string(width) + "x" + std::to_string(height) + ", not 1x1");
-        glGetTexImage(GL_TEXTURE_2D, level, GL_RED, GL_FLOAT, nullptr);
-    }
+    glGetTexImage(GL_TEXTURE_2D, level, GL_RED, GL_FLOAT, nullptr);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(previousPack));
     slot.fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     slot.serial = ++serial_;
