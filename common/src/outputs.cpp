@@ -36,9 +36,7 @@ void writeDump(const std::string& dir) {
         GLint levels = 0;
         glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
         for (int level = 0; level < std::max(levels, 1); ++level) {
-            const std::string file =
-                (std::filesystem::path(dir) / ("unit" + std::to_string(unit) + "_level" + std::to_string(level) + ".pfm"))
-                    .string();
+            const std::string file = (std::filesystem::path(dir) / dumpFileName(unit, level)).string();
             writePfm(file, readTextureLevel(static_cast<GLuint>(texture), level));
         }
     }
@@ -48,6 +46,10 @@ void writeDump(const std::string& dir) {
 }
 
 } // namespace
+
+std::string dumpFileName(unsigned unit, int level) {
+    return "unit" + std::to_string(unit) + "_level" + std::to_string(level) + ".pfm";
+}
 
 bool wantsOutputs(const Options& options) {
     return !options.output.empty() || !options.exr.empty() || !options.dumpDir.empty();

@@ -5,6 +5,7 @@
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
+#include "t10/outputs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,21 +15,21 @@
 namespace t10::test {
 
 ImageF Dump::level(int unit, int levelIndex) const {
-    const std::string file = path("unit" + std::to_string(unit) + "_level" + std::to_string(levelIndex) + ".pfm");
+    const std::string file = path(dumpFileName(static_cast<unsigned>(unit), levelIndex));
     if (!std::filesystem::exists(file)) throw Error(file + ": not written by the stage (is the texture bound to unit " + std::to_string(unit) + "?)");
     return readPfm(file);
 }
 
 int Dump::levelCount(int unit) const {
     int count = 0;
-    while (std::filesystem::exists(path("unit" + std::to_string(unit) + "_level" + std::to_string(count) + ".pfm"))) ++count;
+    while (std::filesystem::exists(path(dumpFileName(static_cast<unsigned>(unit), count)))) ++count;
     return count;
 }
 
 double Dump::luminanceKey() const {
-    const int levels = levelCount(16);
+    const int levels = luminanceLevels();
     if (levels == 0) throw Error(dir + ": no luminance texture (unit 16) was written");
-    const ImageF last = level(16, levels - 1);
+    const ImageF last = level(contract::kLuminanceKeyUnit, levels - 1);
     if (last.width != 1 || last.height != 1) {
         throw Error(dir + ": the last luminance level is " + std::to_string(last.width) + "x" +
                     std::to_string(last.height) + ", not 1x1");
@@ -41,7 +42,7 @@ Dump loadDump(const std::string& name) {
     if (root == nullptr || *root == '\0') throw Error("T10_DUMP_DIR is not set: run these tests through ctest");
     Dump dump;
     dump.dir = std::string(root) + "/" + name;
-    dump.accumulation = readPfm(dump.path("unit15_level0.pfm"));
+    dump.accumulation = readPfm(dump.path(dumpFileName(contract::kAccumulationUnit, 0)));
     dump.frame = readPng(dump.path("frame.png"));
     return dump;
 }

@@ -1,6 +1,7 @@
 // Access to the buffers a stage wrote with --dump/--output for the numeric tests. The ctest
 // fixtures render them first; T10_DUMP_DIR points at their folder.
 #pragma once
+#include "t10/contract.hpp"
 #include "t10/image.hpp"
 
 #include <string>
@@ -9,13 +10,16 @@ namespace t10::test {
 
 struct Dump {
     std::string dir;
-    ImageF accumulation;   // unit 15, level 0 (RGB)
+    ImageF accumulation;   // the accumulation unit (15), level 0 (RGB)
     Image8 frame;          // the final frame (--output)
     std::string path(const std::string& file) const { return dir + "/" + file; }
     // Level `level` of the texture that was on `unit`; throws t10::Error if the stage did not write it.
     ImageF level(int unit, int level) const;
     // Number of levels written for `unit`.
     int levelCount(int unit) const;
+    // The bloom texture's level (unit 17) and the luminance texture's level count (unit 16).
+    ImageF bloom(int level) const { return this->level(contract::kBloomUnit, level); }
+    int luminanceLevels() const { return levelCount(contract::kLuminanceKeyUnit); }
     // The value in the last (1x1) level of the luminance texture on unit 16: the range-mapped scene
     // key (GL_R16) or the log key itself (GL_R16F). Throws t10::Error if that level is not 1x1.
     double luminanceKey() const;

@@ -127,7 +127,7 @@ TEST_CASE("extras with default settings renders Part 3's frame and buffers", "[e
     report("extras defaults vs Part 3 (256x256)", frame);
     const double keyExtras = extras.luminanceKey();
     const double keyPart3 = part3.luminanceKey();
-    const double bloomError = t10::test::compareLevels(extras.level(17, 1), part3.level(17, 1)).worstRelativeToPeak;
+    const double bloomError = t10::test::compareLevels(extras.bloom(1), part3.bloom(1)).worstRelativeToPeak;
     std::cout << "  mapped key " << keyExtras << " vs " << keyPart3 << ", blurred bloom worst difference "
               << bloomError << " of peak\n";
     // The same operations on the same inputs: llvmpipe gives bit-identical results. The only
@@ -180,7 +180,7 @@ TEST_CASE("step 37: the white point reaches the range mapping and the tone map",
         // At 256x256 every 2x2 average is exact; each of the 8 levels below level 0 rounds to the
         // nearest R16 step again: half a step per level (the Part 1 bound). Mapping with the wrong
         // Yw in the luminance pass moves the mapped key by thousands of steps.
-        const int roundings = dump.levelCount(16) - 1;
+        const int roundings = dump.luminanceLevels() - 1;
         std::cout << name << ": mapped key GPU " << gpuMapped << " CPU " << cpuMapped << " ("
                   << std::abs(gpuMapped - cpuMapped) * 65535.0 << " R16 steps)\n";
         CHECK(std::abs(gpuMapped - cpuMapped) <= (0.5 * roundings + 0.01) / 65535.0);
@@ -226,7 +226,7 @@ TEST_CASE("step 38: the bloom takes exactly the pixels at or above threshold x Y
     for (const Run& run : runs) {
         const auto dump = loadDump(run.dump);
         const double threshold = run.yw * run.multiple;
-        const t10::ImageF gpu = dump.level(17, 0);
+        const t10::ImageF gpu = dump.bloom(0);
         const t10::ImageF cpu = ref::bloomThreshold(dump.accumulation, threshold);
         int bright = 0;
         int misclassified = 0;
@@ -263,8 +263,8 @@ TEST_CASE("step 38: a higher threshold leaves less bloom energy", "[extras][step
     std::vector<double> level1;
     for (int i = 0; i < 4; ++i) {
         const auto dump = loadDump(dumps[i]);
-        level0.push_back(luminanceSum(dump.level(17, 0)));
-        level1.push_back(4.0 * luminanceSum(dump.level(17, 1))); // a level-1 texel covers four pixels
+        level0.push_back(luminanceSum(dump.bloom(0)));
+        level1.push_back(4.0 * luminanceSum(dump.bloom(1))); // a level-1 texel covers four pixels
         std::cout << "threshold " << multiples[i] << " x Yw: bloom energy (sum of luminance) " << level0.back()
                   << " before the blur, " << level1.back() << " after\n";
     }
@@ -298,7 +298,7 @@ TEST_CASE("step 38: the strength scales the bloom that is added", "[extras][step
     // the halo is steep (measured: none beyond the operator's one step). The weight 0.98 instead
     // of the uniform is off by up to 170 steps.
     const double key = ref::keyFromMapped(strong.luminanceKey());
-    const t10::ImageF bloom = strong.level(17, 1);
+    const t10::ImageF bloom = strong.bloom(1);
     const auto error = t10::test::byteError(ref::finalFrame(strong.accumulation, key, &bloom, at(ref::kYwhite, 2.0)), strong.frame);
     report("strength 2 vs CPU (GPU bloom x 2)", error);
     CHECK(error.max <= 2);
@@ -315,7 +315,7 @@ TEST_CASE("step 39: more blur passes widen the halo of a hot pixel", "[extras][s
     std::vector<double> moments;
     for (int n : passes) {
         const auto dump = loadDump("extras_hot_p" + std::to_string(n));
-        const t10::ImageF level0 = dump.level(17, 0);
+        const t10::ImageF level0 = dump.bloom(0);
         if (n == 0) {
             // No pass: the final pass reads level 0, unblurred. The 2x2 block's second moment is
             // 4 x (0.5^2 + 0.5^2) / 4 = 0.5 px^2 exactly.
@@ -326,7 +326,7 @@ TEST_CASE("step 39: more blur passes widen the halo of a hot pixel", "[extras][s
             report("0 passes: frame vs CPU with the unblurred level 0 added", error);
             CHECK(error.max <= kOperatorMaxSteps);
         } else {
-            const t10::ImageF gpu = dump.level(17, 1);
+            const t10::ImageF gpu = dump.bloom(1);
             moments.push_back(secondMoment(gpu, 2.0));
             // The same passes on the CPU give the same shape. Each pass stores into R11G11B10F, which
             // Mesa truncates: every texel loses up to 2^-6 of its value per store, so the energy
@@ -422,7 +422,7 @@ TEST_CASE("step 40: where pixels exceed Yw, GL_R16F is closer to the true log-av
     // The clamp's bias must be well outside both bounds for the comparison to mean anything.
     REQUIRE(cpu - cpuClamped > 3.0 * kR16FLogBound);
     CHECK(std::abs(b - cpu) < std::abs(a - cpu));
-    const t10::ImageF bloom = r16f.level(17, 1);
+    const t10::ImageF bloom = r16f.bloom(1);
     const auto frame = t10::test::byteError(ref::finalFrame(r16f.accumulation, std::exp(b), &bloom, at(yw, 0.98)), r16f.frame);
     report("R16F scene frame vs CPU operator with its key and the GPU bloom", frame);
     CHECK(frame.max <= 2); // bilinear sub-texel rounding of the bloom, as in the strength test

@@ -14,4 +14,7 @@ void writeOutputs(const Options& options, int width, int height, const Scene& sc
 // True when `options` asks for any output file.
 bool wantsOutputs(const Options& options);
 
+// The name --dump gives one level of the texture on a unit: "unit16_level3.pfm".
+std::string dumpFileName(unsigned unit, int level);
+
 } // namespace t10
