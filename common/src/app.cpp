@@ -152,17 +152,7 @@ int App::run() {
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         context_.pollEvents();
         if (context_.shouldClose()) break;
-        if (static_cast<std::size_t>(frame) < options_.resizeSequence.size()) {
-            // Scripted resize (tests): the same path a window's size change takes.
-            const auto [w, h] = options_.resizeSequence[static_cast<std::size_t>(frame)];
-            context_.requestSize(w, h);
-            resize(w, h);
-        } else if (window) {
-            int w = 0;
-            int h = 0;
-            context_.framebufferSize(w, h);
-            if (w != width_ || h != height_) resize(w, h);
-        }
+        followSize(frame);
         const double elapsed = secondsSince(last);
         last = Clock::now();
         if (input_ != nullptr) input_->update(elapsed);
@@ -186,23 +176,43 @@ int App::run() {
         }
         if (window && secondsSince(titleTime) > kTitleInterval) {
             titleTime = Clock::now();
-            char title[160];
-            std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps)", stage_.name, frameTimeMs_,
-                          frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0);
-            context_.setTitle(title);
+            showFrameTimeInTitle();
         }
         context_.swapBuffers();
     }
     if (frames == 0 && wantsOutputs(options_)) {
         std::cerr << "note: --output, --exr and --dump are written after the last of --frames N frames\n";
     }
-    if (options_.verbose && !times.empty()) {
-        std::vector<double> sorted = times;
-        std::sort(sorted.begin(), sorted.end());
-        std::cout << "frames: " << times.size() << ", median frame time " << sorted[sorted.size() / 2] << " ms, mean "
-                  << std::accumulate(times.begin(), times.end(), 0.0) / static_cast<double>(times.size()) << " ms\n";
-    }
+    if (options_.verbose && !times.empty()) printFrameTimes(times);
     return 0;
+}
+
+void App::followSize(int frame) {
+    if (static_cast<std::size_t>(frame) < options_.resizeSequence.size()) {
+        // Scripted resize (tests): the same path a window's size change takes.
+        const auto [w, h] = options_.resizeSequence[static_cast<std::size_t>(frame)];
+        context_.requestSize(w, h);
+        resize(w, h);
+    } else if (context_.isWindow()) {
+        int w = 0;
+        int h = 0;
+        context_.framebufferSize(w, h);
+        if (w != width_ || h != height_) resize(w, h);
+    }
+}
+
+void App::showFrameTimeInTitle() {
+    char title[160];
+    std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps)", stage_.name, frameTimeMs_,
+                  frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0);
+    context_.setTitle(title);
+}
+
+void App::printFrameTimes(std::vector<double> times) const {
+    const double mean = std::accumulate(times.begin(), times.end(), 0.0) / static_cast<double>(times.size());
+    std::sort(times.begin(), times.end());
+    std::cout << "frames: " << times.size() << ", median frame time " << times[times.size() / 2] << " ms, mean "
+              << mean << " ms\n";
 }
 
 int runStage(int argc, const char* const* argv, const Stage& stage) {

@@ -17,6 +17,8 @@
 #include "t10/ui_host.hpp"
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace t10 {
 
@@ -52,8 +54,11 @@ private:
     void resize(int width, int height);
     void buildStage();
     void quitStage();
+    void followSize(int frame);
     void drawUi();
     void checkGlErrors(const std::string& when);
+    void showFrameTimeInTitle();
+    void printFrameTimes(std::vector<double> times) const;
 
     const Stage& stage_;
     Options options_;
