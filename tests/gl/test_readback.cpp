@@ -1,6 +1,8 @@
 // TexelReadback, the non-blocking read of one texel (extras' scene key): the value arrives once
 // the GPU has made the copy, it is the value of the newest finished request, it never disturbs
 // the pixel-pack binding that synchronous reads rely on, and a level that is not 1x1 is refused.
+#include "gl_context.hpp"
+
 #include "t10/context.hpp"
 #include "t10/error.hpp"
 #include "t10/gl.hpp"
@@ -28,12 +30,7 @@ GLuint keyTexture(float value) {
 } // namespace
 
 TEST_CASE("TexelReadback returns the newest finished copy without disturbing other reads", "[readback]") {
-    t10::ContextOptions options;
-    options.backend = t10::Backend::Egl;
-    options.width = 8;
-    options.height = 8;
-    options.debug = true;
-    const std::unique_ptr<t10::Context> context = t10::Context::create(options);
+    const std::unique_ptr<t10::Context> context = t10::test::makeTestContext();
     t10::GlErrorLog log;
     log.installDebugCallback();
 
