@@ -2,6 +2,7 @@
 // argument list, one argument per line. Parsing must end in "go on" (-1), 0 (--help, --version) or 2
 // (bad usage), and "go on" must leave options that the rest of the program can trust.
 #include "t10/cli.hpp"
+#include "t10/contract.hpp"
 
 #include <cctype>
 #include <cstddef>
@@ -12,7 +13,7 @@
 
 namespace {
 
-bool sideOk(int side) { return side >= t10::kMinFramebufferSide && side <= 16384; }
+bool sideOk(int side) { return side >= t10::contract::kMinFramebufferSide && side <= 16384; }
 
 bool endsWithNoCase(const std::string& text, const std::string& suffix) {
     if (text.size() < suffix.size()) return false;

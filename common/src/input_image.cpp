@@ -3,7 +3,7 @@
 // gigabytes later at an incomplete framebuffer.
 #include "t10/input_image.hpp"
 
-#include "t10/cli.hpp"
+#include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/gl.hpp"
 
@@ -60,9 +60,9 @@ ImageF loadInputImage(const std::string& path, bool keepNonFinite, std::ostream&
     ImageF image = readExr(path, renderLimits());
     // One rule for every size (--size, --resize-sequence, --input): sides from 2, because the bloom
     // texture has two mipmap levels and a side of 1 has only one.
-    if (image.width < kMinFramebufferSide || image.height < kMinFramebufferSide)
+    if (image.width < contract::kMinFramebufferSide || image.height < contract::kMinFramebufferSide)
         throw Error(path + ": the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                    "; each side must be at least " + std::to_string(kMinFramebufferSide) +
+                    "; each side must be at least " + std::to_string(contract::kMinFramebufferSide) +
                     " (the bloom texture needs two mipmap levels)");
     if (!keepNonFinite) {
         if (const std::size_t count = clampNonFinite(image, kHalfMax); count > 0)

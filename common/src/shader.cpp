@@ -26,9 +26,7 @@ GLenum stageFromExtension(const std::filesystem::path& file) {
 }
 
 std::string readText(const std::filesystem::path& file) {
-    std::vector<std::uint8_t> bytes;
-    std::string fault;
-    if (!readFile(file.string(), bytes, fault)) throw Error(file.string() + ": shader " + fault);
+    const std::vector<std::uint8_t> bytes = readFile(file.string()); // the error carries the reason
     return std::string(bytes.begin(), bytes.end());
 }
 

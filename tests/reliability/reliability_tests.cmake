@@ -59,7 +59,7 @@ add_test(NAME "reliability: a --dump folder that cannot be made names the option
 file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/reliability/unreadable_shader)
 file(CREATE_LINK /proc/self/mem ${CMAKE_CURRENT_BINARY_DIR}/reliability/unreadable_shader/PostProcess.frag SYMBOLIC)
 add_test(NAME "reliability: an unreadable shader says why"
-         COMMAND ${EXPECT} 1 "PostProcess.frag: shader cannot read file: Input/output error" --
+         COMMAND ${EXPECT} 1 "PostProcess.frag: cannot read file: Input/output error" --
                  ${BIN}/${S0} --headless --backend egl --size 64x64
                  --shader-dir ${CMAKE_CURRENT_BINARY_DIR}/reliability/unreadable_shader)
 

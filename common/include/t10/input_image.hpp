@@ -18,8 +18,8 @@ constexpr std::uint64_t kRenderBytesPerPixel = 64;
 // GL_MAX_VIEWPORT_DIMS: the smallest wins) and of the memory available now (MemAvailable).
 ExrLimits renderLimits();
 
-// Reads `path` for rendering: beyond renderLimits() or with a side below 2 (kMinFramebufferSide) it
-// throws t10::Error naming the file and the limit. +infinity becomes kHalfMax, NaN and -infinity 0, with
+// Reads `path` for rendering: beyond renderLimits() or with a side below
+// contract::kMinFramebufferSide it throws t10::Error naming the file and the limit. +infinity becomes kHalfMax, NaN and -infinity 0, with
 // one warning on `warnings` that counts the pixels, unless `keepNonFinite`.
 ImageF loadInputImage(const std::string& path, bool keepNonFinite, std::ostream& warnings);
 
