@@ -83,6 +83,8 @@ const std::vector<CameraPreset>& cameraPresets() {
          {1.2f, 1.9f, -1.6f}, 4.0f, -3.0f, 60.0f},
         {"crates", "Three-quarter view of the crates, showing POM edges trimmed at the faces",
          {0.4f, 1.8f, -1.4f}, -12.0f, -19.0f, 55.0f},
+        {"dark", "Turned away from the window and the lamps, towards the unlit end of the room: the exposure opens up",
+         {0.5f, 1.6f, -3.0f}, 172.0f, -4.0f, 60.0f},
     };
     return presets;
 }
