@@ -1,6 +1,7 @@
 // The shared frame loop: context, scene, stage callbacks, input, resizes, GL error checks and the
 // output files (--output, --exr, --dump).
 #include "t10/app.hpp"
+#include "t10/scene_key.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
@@ -209,7 +210,11 @@ int App::run() {
         glErrors_->pollGetError();
         if (!glErrors_->empty()) throw Error("GL error in frame " + std::to_string(frame) + ":" + glErrors_->describe());
         times.push_back(renderMs);
-        if (options_.verbose) std::cout << "frame " << frame << ": " << renderMs << " ms\n";
+        if (options_.verbose) {
+            std::cout << "frame " << frame << ": " << renderMs << " ms";
+            if (const auto key = readSceneKey()) std::cout << ", key Ya " << key->ya;
+            std::cout << "\n";
+        }
         if (frames != 0 && frame == frames - 1) {
             writeOutputs();
             glErrors_->pollGetError();

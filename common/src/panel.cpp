@@ -67,7 +67,9 @@ void ImGuiPanel::begin(const char* title) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    // Bottom left, over the floor: the scene's lamps and window are in the upper half of every
+    // preset's view, and a panel in the corner above would hide the red lamp of the default view.
+    ImGui::SetNextWindowPos(ImVec2(8.0f, ImGui::GetIO().DisplaySize.y - 8.0f), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
     ImGui::Begin(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
 }
 
