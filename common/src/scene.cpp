@@ -1,7 +1,9 @@
-// The HDR scene every stage renders: a closed brick room with a tiled floor, a timbered ceiling and
-// three wooden crates, all parallax-occlusion and normal mapped, lit per fragment by coloured HDR point
-// lights that are also drawn as emissive cubes. Output goes to the GL_RGBA16F accumulation texture,
-// which stays bound to texture unit 15 for the post-process stages.
+// The HDR scene every stage renders: a dim, closed brick room with a tiled floor, a timbered ceiling
+// and three wooden crates, all parallax-occlusion and normal mapped, lit per fragment by a few HDR
+// point lights: small lamps drawn as very bright emissive cubes, and daylight through a window in
+// the back wall. Luminance spans more than three decades (median about 0.03, sources up to 80).
+// Output goes to the GL_RGBA16F accumulation texture, which stays bound to texture unit 15 for the
+// post-process stages.
 #include "t10/scene.hpp"
 
 #include "t10/error.hpp"
