@@ -67,7 +67,7 @@ gnuplot <<GNUPLOT
 set terminal $terminal
 set output '$png'
 set datafile separator ','
-set key top left
+set key below
 set grid
 set title "extras: blur passes at $size, default camera: post-process GPU time and halo radius\\n$renderer"
 set xlabel 'blur pass pairs'
