@@ -76,7 +76,7 @@ bench-passes: PACKAGES += gnuplot-nox
 bench-passes: deps
 	@[ -f build-release/build.ninja ] || cmake --preset release
 	cmake --build build-release -j $(JOBS) --target extras make_test_images halo_radius
-	tests/bench/bench_passes.sh build-release/bin $(OUT) 10 5 1280x720 3
+	tools/bench_passes/bench_passes.sh build-release/bin $(OUT) 10 5 1280x720 3
 
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).
