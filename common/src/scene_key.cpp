@@ -1,24 +1,19 @@
 // Reading the scene key back from unit 16; see scene_key.hpp.
 #include "t10/scene_key.hpp"
 
-#include "t10/app.hpp"
+#include "t10/contract.hpp"
 #include "t10/gl.hpp"
+#include "t10/readback.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace t10 {
 
-namespace {
-constexpr GLuint kLuminanceKeyUnit = 16;
-constexpr double kWhitePoint = 0.22; // the range mapping of steps 5 and 9
-constexpr double kEpsilon = 1e-8;
-} // namespace
-
 std::optional<SceneKey> readSceneKey() {
     GLint active = 0;
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-    glActiveTexture(GL_TEXTURE0 + kLuminanceKeyUnit);
+    glActiveTexture(GL_TEXTURE0 + contract::kLuminanceKeyUnit);
     GLint texture = 0;
     glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
     std::optional<SceneKey> key;
@@ -32,8 +27,8 @@ std::optional<SceneKey> readSceneKey() {
             SceneKey k;
             k.stored = last.data[0];
             k.rangeMapped = format != GL_R16F;
-            const double lnEps = std::log(kEpsilon);
-            k.ya = k.rangeMapped ? std::exp(k.stored * (std::log(kWhitePoint) - lnEps) + lnEps) : std::exp(k.stored);
+            const double lnEps = std::log(contract::kEpsilon); // the range mapping of steps 5 and 9
+            k.ya = k.rangeMapped ? std::exp(k.stored * (std::log(contract::kWhitePoint) - lnEps) + lnEps) : std::exp(k.stored);
             key = k;
         }
     }
