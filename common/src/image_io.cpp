@@ -224,7 +224,7 @@ ExrShape checkHeaders(const std::uint8_t* bytes, std::size_t size, const std::st
         // OpenEXR allocates a buffer of one tile: a tile larger than the image it tiles is refused
         // (a 65536 x 65536 tile over a small image took 15 s of memset under ASan, found by the fuzz
         // target).
-        if (first && (tileW > shape.width || tileH > shape.height) && tileW * tileH > 64 * 64)
+        if (first && (tileW > shape.width || tileH > shape.height) && (tileW > 64 || tileH > 64))
             fail(name, "EXR tile size " + std::to_string(tileW) + "x" + std::to_string(tileH) +
                            " is larger than the image");
         // Every tile of the first level has an 8-byte offset in the file: more tiles than that is a lie.
