@@ -76,3 +76,16 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
+# and a key-once final pass, and the key three ways with its error, at 320x180 .. 3840x2160 in a
+# release build (build-release/). Prints the tables; writes CSV, report.txt and bench.png into
+# $(OUT)/bench/. BENCH_ARGS passes options (e.g. BENCH_ARGS="--sizes 640x360,1280x720 --repeats 3").
+.PHONY: bench
+bench: PACKAGES += gnuplot-nox
+bench: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target t10-bench
+	build-release/bin/t10-bench --out $(OUT)/bench $(BENCH_ARGS)
+	gnuplot -e "dir='$(OUT)/bench'" tools/bench/plot.gp
+	@echo "wrote $(OUT)/bench/bench.png"

@@ -29,8 +29,11 @@
 
 #include <glm/glm.hpp>
 
-// [step 40] std::isfinite for the scene key check
+// [step 40] std::isfinite for the scene key check; the exact key (--key exact)
 #include <cmath>
+#include <memory>
+
+#include "t10/exact_key.hpp"
 // [/step 40]
 
 using namespace glm;
@@ -104,6 +107,10 @@ int g_iLuminanceLevels = 1;       // levels of g_uiLuminanceKey; the last one is
 float g_fSceneKey = 0.0f;         // Ya, read back from that level
 bool g_bSceneKeyValid = true;     // false while the read-back key is NaN or infinite
 bool g_bSceneKeyReported = false; // the warning goes to stderr once per run
+// --key exact: replace the mip chain's 1x1 level by the exact mean of level 0 (common/exact_key.hpp),
+// since at odd sizes glGenerateMipmap's filter may skip rows and columns
+bool g_bExactKey = false;
+std::unique_ptr<t10::ExactKey> g_pExactKey;
 // [/step 40]
 
 // [step 37] The window's panel and keyboard shortcuts
@@ -150,6 +157,7 @@ bool GL_Init(t10::App& app)
     // [step 40] GL_R16F holds log luminance as it is; GL_R16 needs it range mapped to [0, 1]
     glTexStorage2D(GL_TEXTURE_2D, iLevels, g_bLuminanceR16F ? GL_R16F : GL_R16, g_iWindowWidth, g_iWindowHeight);
     g_iLuminanceLevels = iLevels;
+    if (g_bExactKey && !g_pExactKey) g_pExactKey = std::make_unique<t10::ExactKey>(app.shaders());
     // [/step 40]
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -265,6 +273,9 @@ void GL_RenderPostProcess()
     glActiveTexture(GL_TEXTURE16);
     glBindTexture(GL_TEXTURE_2D, g_uiLuminanceKey);
     glGenerateMipmap(GL_TEXTURE_2D);
+    // [step 40] --key exact: the exact mean of level 0 replaces the mip chain's 1x1 level
+    if (g_pExactKey) g_pExactKey->store(g_uiLuminanceKey, g_iWindowWidth, g_iWindowHeight, g_iLuminanceLevels - 1);
+    // [/step 40]
     // [/step 15]
 
     // [step 24] Bind texture and generate mipmaps on bloom texture
@@ -592,6 +603,10 @@ void GL_Quit()
     // [step 37] Delete the panel (GL_Init creates it again after a resize)
     g_Panel.destroy();
     // [/step 37]
+
+    // [step 40] Delete the exact key's program and buffers while the context is current
+    g_pExactKey.reset();
+    // [/step 40]
 }
 
 // [step 37] The command-line options of the exercises (out-of-range values exit 2 with the range),
@@ -626,6 +641,11 @@ void GL_AddOptions(CLI::App& cli)
            "--luminance-format", [](const std::string& strFormat) { g_bLuminanceR16F = strFormat == "r16f"; },
            "Step 40: r16 (GL_R16 with range mapping, the default) or r16f (GL_R16F without)")
         ->check(CLI::IsMember({"r16", "r16f"}));
+    cli.add_option_function<std::string>(
+           "--key", [](const std::string& strKey) { g_bExactKey = strKey == "exact"; },
+           "Step 40: mip (the 1x1 level of the mip chain, the default) or exact (the mean of every pixel, "
+           "computed on the GPU; the mip chain is inexact at odd sizes)")
+        ->check(CLI::IsMember({"mip", "exact"}));
     // [/step 40]
     cli.footer("Keys in the window (besides WASD, Q/E, Shift, the right mouse button, scroll and Esc):\n"
                "  Up / Down          white point Yw x1.25 / /1.25 (step 37)\n"

@@ -25,6 +25,9 @@ layout(binding = 2) uniform sampler2D s2DepthMap;   // 0 = top of the surface, 1
 layout(location = 0) uniform float fParallaxScale; // UV units the deepest point lies below the top
 layout(location = 1) uniform float fShininess;
 layout(location = 2) uniform float fSpecular;
+// At most this many parallax layers (grazing views; 100 unless a window on a software renderer
+// lowers it to stay interactive, see Scene::setMaxParallaxLayers).
+layout(location = 3) uniform float fMaxParallaxLayers;
 
 layout(location = 0) in vec3 v3Position;
 layout(location = 1) in vec3 v3Normal;
@@ -45,7 +48,7 @@ const float kFalloffSoftening = 0.05f;
 // undisplaced coordinate, v2Dx and v2Dy.
 vec3 parallaxOcclusionMapping(vec2 v2TexCoord, vec3 v3View, vec2 v2Dx, vec2 v2Dy) {
     const float fMinLayers = 10.0f;
-    const float fMaxLayers = 100.0f;
+    float fMaxLayers = max(fMaxParallaxLayers, fMinLayers);
     // Looking straight down needs few layers; grazing views need many.
     float fNumLayers = mix(fMaxLayers, fMinLayers, abs(v3View.z));
     float fLayerDepth = 1.0f / fNumLayers;

@@ -4,6 +4,7 @@
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
+#include "t10/interactive.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -77,6 +78,8 @@ App::App(const Stage& stage, const Options& options, Context& context)
         scene_->setInputImage(std::move(image));
     }
     if (context_.isWindow()) {
+        // Interactive speed without a GPU (t10/interactive.hpp); headless renders are unchanged.
+        if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         glfwSetWindowUserPointer(context_.window(), this);
         glfwSetScrollCallback(context_.window(), [](GLFWwindow* window, double, double dy) {
             static_cast<App*>(glfwGetWindowUserPointer(window))->camera_.zoom(static_cast<float>(dy));

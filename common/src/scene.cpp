@@ -27,6 +27,7 @@ constexpr GLuint kDepthUnit = 2;
 constexpr GLint kParallaxScaleLocation = 0;
 constexpr GLint kShininessLocation = 1;
 constexpr GLint kSpecularLocation = 2;
+constexpr GLint kMaxParallaxLayersLocation = 3;
 constexpr GLint kLightHalfSizeLocation = 0;
 
 constexpr float kLightCubeHalfSize = 0.12f;
@@ -278,6 +279,7 @@ void Scene::resize(int width, int height) {
         throw Error("Scene::resize: invalid size " + std::to_string(width) + "x" + std::to_string(height));
     width_ = width;
     height_ = height;
+    lastCamera_.clear(); // a new accumulation texture holds nothing yet
 
     // Immutable storage cannot change size, so a resize makes new objects.
     framebuffer_.reset();
@@ -339,6 +341,21 @@ void Scene::render(const Camera& camera) {
         return;
     }
 
+    const CameraBlock cameraBlock{camera.view(),
+                                  camera.projection(static_cast<float>(width_) / static_cast<float>(height_)),
+                                  glm::vec4(camera.position(), 1.0f)};
+    // Render on change: the same camera on the same target gives the same image, which is still
+    // in the accumulation texture. The state is left as a full render leaves it.
+    const auto* cameraFloats = reinterpret_cast<const float*>(&cameraBlock);
+    std::vector<float> cameraKey(cameraFloats, cameraFloats + sizeof cameraBlock / sizeof(float));
+    if (renderOnChange_ && cameraKey == lastCamera_) {
+        glUseProgram(0);
+        glBindVertexArray(0);
+        glActiveTexture(GL_TEXTURE0);
+        return;
+    }
+    lastCamera_ = std::move(cameraKey);
+
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_BLEND);
@@ -347,9 +364,6 @@ void Scene::render(const Camera& camera) {
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
 
-    const CameraBlock cameraBlock{camera.view(),
-                                  camera.projection(static_cast<float>(width_) / static_cast<float>(height_)),
-                                  glm::vec4(camera.position(), 1.0f)};
     glBindBuffer(GL_UNIFORM_BUFFER, cameraUbo_.get());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(CameraBlock), &cameraBlock);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
@@ -369,6 +383,7 @@ void Scene::render(const Camera& camera) {
         glUniform1f(kParallaxScaleLocation, m.parallaxScale);
         glUniform1f(kShininessLocation, m.shininess);
         glUniform1f(kSpecularLocation, m.specular);
+        glUniform1f(kMaxParallaxLayersLocation, maxParallaxLayers_);
         glBindVertexArray(mesh.vao.get());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }

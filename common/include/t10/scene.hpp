@@ -41,6 +41,14 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
+    // Interactive speed on software renderers (the window sets these; headless renders keep the
+    // defaults, so the golden images do not change). The parallax search takes at most `layers`
+    // steps (default 100, at least 10). With render-on-change, render() skips drawing when the
+    // camera and the size are those of the last frame: the accumulation texture still holds it.
+    void setMaxParallaxLayers(float layers) { maxParallaxLayers_ = layers; }
+    float maxParallaxLayers() const { return maxParallaxLayers_; }
+    void setRenderOnChange(bool on) { renderOnChange_ = on; lastCamera_.clear(); }
+
     const std::vector<PointLight>& lights() const { return lights_; }
     GLuint accumulationTexture() const { return accumulation_.get(); }
     GLuint accumulationFramebuffer() const { return framebuffer_.get(); }
@@ -63,6 +71,9 @@ private:
     std::optional<ImageF> input_;
     int width_ = 0;
     int height_ = 0;
+    float maxParallaxLayers_ = 100.0f;
+    bool renderOnChange_ = false;
+    std::vector<float> lastCamera_; // the camera block of the last drawn frame (empty: none)
 };
 
 } // namespace t10
