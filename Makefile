@@ -23,6 +23,7 @@ help:
 	@echo "make test   build and run every test (ctest)"
 	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
 	@echo "make clean  remove $(BUILD)/ and $(OUT)/"
+	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
