@@ -9,6 +9,4 @@ set xlabel "pixels"
 set ylabel "ms per frame"
 set key outside right
 set grid
-stats dir."/times.dat" skip 1 nooutput
-columns = STATS_columns
-plot for [i=2:columns] dir."/times.dat" using 1:i with linespoints lw 2 title columnheader(i)
+plot for [i=2:*] dir."/times.dat" using 1:i with linespoints lw 2 title columnheader(i)
