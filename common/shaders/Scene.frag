@@ -26,7 +26,7 @@ layout(location = 0) uniform float fParallaxScale; // UV units the deepest point
 layout(location = 1) uniform float fShininess;
 layout(location = 2) uniform float fSpecular;
 // At most this many parallax layers (grazing views; 100 unless a window on a software renderer
-// lowers it to stay interactive, see Scene::setMaxParallaxLayers).
+// lowers it while the camera moves, see Scene::setRenderOnChange).
 layout(location = 3) uniform float fMaxParallaxLayers;
 
 layout(location = 0) in vec3 v3Position;

@@ -10,14 +10,16 @@ bool isSoftwareRenderer(const std::string& renderer) {
 }
 
 std::string tuneSceneForWindow(Scene& scene) {
-    scene.setRenderOnChange(true);
     const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (text == nullptr || !isSoftwareRenderer(text)) return "";
-    scene.setMaxParallaxLayers(kSoftwareWindowParallaxLayers);
-    char note[200];
+    if (text == nullptr || !isSoftwareRenderer(text)) {
+        scene.setRenderOnChange(true);
+        return "";
+    }
+    scene.setRenderOnChange(true, kSoftwareWindowParallaxLayers);
+    char note[240];
     std::snprintf(note, sizeof note,
-                  "note: software renderer (%s): the window uses at most %.0f parallax layers (headless renders: "
-                  "100) and redraws the scene only when the camera moves",
+                  "note: software renderer (%s): the scene is redrawn only when the camera moves, with at most "
+                  "%.0f parallax layers while it moves (100 once it stops, as headless)",
                   text, double(kSoftwareWindowParallaxLayers));
     return note;
 }

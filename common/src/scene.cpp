@@ -28,6 +28,7 @@ constexpr GLint kParallaxScaleLocation = 0;
 constexpr GLint kShininessLocation = 1;
 constexpr GLint kSpecularLocation = 2;
 constexpr GLint kMaxParallaxLayersLocation = 3;
+constexpr float kFullParallaxLayers = 100.0f; // Scene.frag's search at grazing angles
 constexpr GLint kLightHalfSizeLocation = 0;
 
 constexpr float kLightCubeHalfSize = 0.12f;
@@ -346,15 +347,23 @@ void Scene::render(const Camera& camera) {
                                   glm::vec4(camera.position(), 1.0f)};
     // Render on change: the same camera on the same target gives the same image, which is still
     // in the accumulation texture. The state is left as a full render leaves it.
-    const auto* cameraFloats = reinterpret_cast<const float*>(&cameraBlock);
-    std::vector<float> cameraKey(cameraFloats, cameraFloats + sizeof cameraBlock / sizeof(float));
-    if (renderOnChange_ && cameraKey == lastCamera_) {
-        glUseProgram(0);
-        glBindVertexArray(0);
-        glActiveTexture(GL_TEXTURE0);
-        return;
+    float parallaxLayers = kFullParallaxLayers;
+    if (renderOnChange_) {
+        const auto* cameraFloats = reinterpret_cast<const float*>(&cameraBlock);
+        std::vector<float> cameraKey(cameraFloats, cameraFloats + sizeof cameraBlock / sizeof(float));
+        const bool same = cameraKey == lastCamera_;
+        if (same && lastFull_) {
+            glUseProgram(0);
+            glBindVertexArray(0);
+            glActiveTexture(GL_TEXTURE0);
+            return;
+        }
+        // While the camera moves: the moving layer limit; once it stops: one full-quality frame.
+        const bool moving = !same && !lastCamera_.empty();
+        if (moving) parallaxLayers = movingParallaxLayers_;
+        lastFull_ = !moving;
+        lastCamera_ = std::move(cameraKey);
     }
-    lastCamera_ = std::move(cameraKey);
 
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -383,7 +392,7 @@ void Scene::render(const Camera& camera) {
         glUniform1f(kParallaxScaleLocation, m.parallaxScale);
         glUniform1f(kShininessLocation, m.shininess);
         glUniform1f(kSpecularLocation, m.specular);
-        glUniform1f(kMaxParallaxLayersLocation, maxParallaxLayers_);
+        glUniform1f(kMaxParallaxLayersLocation, parallaxLayers);
         glBindVertexArray(mesh.vao.get());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }

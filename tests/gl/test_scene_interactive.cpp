@@ -1,0 +1,66 @@
+// The window's interactive shortcuts in Scene (t10/interactive.hpp): render-on-change must skip only
+// an unchanged view, and the frame after the camera stops must be exactly the full-quality frame
+// (what headless renders and the golden images show).
+#include "t10/app.hpp"
+#include "t10/context.hpp"
+#include "t10/interactive.hpp"
+#include "t10/scene.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <memory>
+
+namespace {
+
+constexpr int kSide = 96;
+
+t10::ImageF renderAccumulation(t10::Scene& scene, const t10::Camera& camera) {
+    scene.render(camera);
+    return t10::readTextureLevel(scene.accumulationTexture(), 0);
+}
+
+// Marks the accumulation texture so that a skipped render is visible.
+void paint(t10::Scene& scene) {
+    glBindFramebuffer(GL_FRAMEBUFFER, scene.accumulationFramebuffer());
+    glClearColor(1.0f, 2.0f, 3.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+}
+
+} // namespace
+
+TEST_CASE("render-on-change skips an unchanged view and redraws a still one at full quality", "[scene]") {
+    t10::ContextOptions options;
+    options.backend = t10::Backend::Egl;
+    options.width = kSide;
+    options.height = kSide;
+    const std::unique_ptr<t10::Context> context = t10::Context::create(options);
+    const t10::ShaderManager shaders({T10_COMMON_SHADER_DIR});
+    t10::Scene scene(shaders, T10_ASSET_DIR);
+    scene.resize(kSide, kSide);
+    t10::Camera camera(*t10::findCameraPreset("default"));
+    t10::Camera moved = camera;
+    moved.look(40.0f, 25.0f); // a grazing view of the floor: the parallax search needs many layers
+
+    const t10::ImageF full = renderAccumulation(scene, moved);   // the default: every frame drawn
+    scene.setRenderOnChange(true, 10.0f);
+    const t10::ImageF first = renderAccumulation(scene, moved);  // nothing drawn yet: full quality
+    CHECK(first.data == full.data);
+
+    paint(scene);
+    const t10::ImageF skipped = renderAccumulation(scene, moved); // same view: not drawn again
+    CHECK(skipped.data != full.data);
+
+    renderAccumulation(scene, camera);                            // moving: 10 layers
+    const t10::ImageF moving = renderAccumulation(scene, moved);  // still moving
+    CHECK(moving.data != full.data);                              // fewer layers show
+    const t10::ImageF still = renderAccumulation(scene, moved);   // stopped: full quality again
+    CHECK(still.data == full.data);
+}
+
+TEST_CASE("Mesa's CPU rasterisers count as software renderers", "[scene]") {
+    CHECK(t10::isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    CHECK(t10::isSoftwareRenderer("softpipe"));
+    CHECK_FALSE(t10::isSoftwareRenderer("NVIDIA GeForce RTX 4090/PCIe/SSE2"));
+    CHECK_FALSE(t10::isSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7, DRM 3.54)"));
+}
