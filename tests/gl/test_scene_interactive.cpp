@@ -1,9 +1,11 @@
 // The window's interactive shortcuts in Scene (t10/interactive.hpp): render-on-change must skip only
 // an unchanged view, and the frame after the camera stops must be exactly the full-quality frame
 // (what headless renders and the golden images show).
-#include "t10/app.hpp"
-#include "t10/context.hpp"
+#include "gl_context.hpp"
+
+#include "t10/gl_object.hpp"
 #include "t10/interactive.hpp"
+#include "t10/readback.hpp"
 #include "t10/scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -20,21 +22,20 @@ t10::ImageF renderAccumulation(t10::Scene& scene, const t10::Camera& camera) {
 }
 
 // Marks the accumulation texture so that a skipped render is visible.
-void paint(t10::Scene& scene) {
-    glBindFramebuffer(GL_FRAMEBUFFER, scene.accumulationFramebuffer());
+void paint(const t10::Scene& scene) {
+    const t10::Framebuffer framebuffer = t10::makeFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scene.accumulationTexture(), 0);
     glClearColor(1.0f, 2.0f, 3.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 } // namespace
 
 TEST_CASE("render-on-change skips an unchanged view and redraws a still one at full quality", "[scene]") {
-    t10::ContextOptions options;
-    options.backend = t10::Backend::Egl;
-    options.width = kSide;
-    options.height = kSide;
-    const std::unique_ptr<t10::Context> context = t10::Context::create(options);
+    const auto context = t10::test::makeTestContext();
     const t10::ShaderManager shaders({T10_COMMON_SHADER_DIR});
     t10::Scene scene(shaders, T10_ASSET_DIR);
     scene.resize(kSide, kSide);

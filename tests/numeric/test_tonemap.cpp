@@ -40,7 +40,7 @@ TEST_CASE("the luminance chain ends in one texel: floor(log2(max)) + 1 levels", 
     for (const char* name : {"part1_pot", "part1_npot"}) {
         const auto dump = loadDump(name);
         const int size = std::max(dump.accumulation.width, dump.accumulation.height);
-        CHECK(dump.levelCount(16) == int(std::floor(std::log2(size))) + 1);
+        CHECK(dump.luminanceLevels() == int(std::floor(std::log2(size))) + 1);
     }
 }
 
@@ -52,7 +52,7 @@ TEST_CASE("scene key at a power-of-two size equals the CPU log-average", "[part1
     // At a power-of-two size every 2x2 average is exact, but each of the levels below level 0 stores
     // its average in GL_R16 again, rounding by up to half a step: half a step per level (8 levels:
     // 0.1 % of Ya at most).
-    const int roundings = dump.levelCount(16) - 1;
+    const int roundings = dump.luminanceLevels() - 1;
     const double relative = relativeKeyError(gpu, cpu);
     const double bound = std::exp(kRange * (0.5 * roundings + 0.01) / 65535.0) - 1.0;
     CHECK(relative <= bound);

@@ -17,12 +17,13 @@
 // the pixel count, the texture lookups and bytes of each chain, the key errors, the renderer and
 // the machine; it writes bench.csv, keys.csv and machine.txt into the output folder.
 #include "reference.hpp"
-#include "t10/app.hpp"
 #include "t10/context.hpp"
+#include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/exact_key.hpp"
 #include "t10/gl_errors.hpp"
 #include "t10/quad.hpp"
+#include "t10/readback.hpp"
 #include "t10/scene.hpp"
 
 #include <CLI/CLI.hpp>
@@ -47,10 +48,11 @@ namespace {
 
 using t10::Error;
 
-constexpr GLuint kUboBinding = 7;
-constexpr GLuint kLuminanceUnit = 16;
-constexpr GLuint kBloomUnit = 17;
-constexpr int kBlurPasses = 5;        // the tutorial's pass pairs
+namespace contract = t10::contract;
+constexpr GLuint kUboBinding = contract::kInvResolutionBinding;
+constexpr GLuint kLuminanceUnit = contract::kLuminanceKeyUnit;
+constexpr GLuint kBloomUnit = contract::kBloomUnit;
+constexpr int kBlurPasses = contract::kBlurPasses; // the tutorial's pass pairs
 constexpr int kLoPasses = 10;         // LearnOpenGL's ping-pong passes
 constexpr int kTapLevels = 6;         // 13-tap chain: 1/2 .. 1/64
 constexpr int kWarmUpRuns = 1;        // untimed runs of every chain before the timed ones
