@@ -655,6 +655,24 @@ int runBench(const Options& options) {
         }
         results.insert(results.end(), sizeResults.begin(), sizeResults.end());
 
+        // The key-once final pass must draw the tutorial's frame (float rounding: one 8-bit step).
+        {
+            tutorialChain(targets, programs, clock, nullptr);
+            clock.finish();
+            const t10::ImageF tutorialFrame = t10::readTextureLevel(targets.display_, 0);
+            keyOnceChain(targets, programs, clock, nullptr);
+            clock.finish();
+            const t10::ImageF keyOnceFrame = t10::readTextureLevel(targets.display_, 0);
+            double worst = 0.0;
+            for (std::size_t i = 0; i < tutorialFrame.data.size(); ++i)
+                worst = std::max(worst, double(std::abs(tutorialFrame.data[i] - keyOnceFrame.data[i])));
+            if (!(worst <= 1.5 / 255.0))
+                throw Error("bench: the key-once final pass differs from Part 3's by " + std::to_string(worst * 255.0) +
+                            " 8-bit steps at " + size.name());
+        }
+        bindUnit(kBloomUnit, targets.bloom_);
+        glActiveTexture(GL_TEXTURE0);
+
         // The key, each way once more, read back and compared with the exact mean of the frame.
         const t10::ImageF frame = t10::readTextureLevel(scene.accumulationTexture(), 0);
         const double exact = t10::ref::meanMappedLogLuminance(frame, true);
@@ -737,6 +755,20 @@ int runBench(const Options& options) {
         }
         table << "\n";
     }
+    // The final pass alone: the key math once per vertex against once per pixel.
+    auto passMedian = [](const Result& r, const std::string& pass) -> double {
+        for (const auto& [name, samples] : r.passMs)
+            if (name == pass) return median(samples);
+        return NAN;
+    };
+    table << "\nFinal pass alone, key math once per vertex / once per pixel (keyonce / tutorial):";
+    for (const Size& size : options.sizes) {
+        const auto& row = bySize[size.name()];
+        std::snprintf(cell, sizeof cell, " %s %.2f;", size.name().c_str(),
+                      passMedian(*row.at("keyonce"), "final") / passMedian(*row.at("tutorial"), "final"));
+        table << cell;
+    }
+    table << "\n";
     const Size& largest = options.sizes.back();
     table << "\nTexture lookups and bytes per chain at " << largest.name()
           << " (bytes: each source texel read once + each target texel written once)\n";
