@@ -43,7 +43,10 @@ endforeach()
 # Step 40: GL_R16F where nothing exceeds Yw (the dim gradient, Yw 1) and in the scene (some pixels do).
 t10_add_extras_dump(extras_dim_r16 --input ${DUMPS}/inputs/dim.exr --white-point 1.0)
 t10_add_extras_dump(extras_dim_r16f --input ${DUMPS}/inputs/dim.exr --white-point 1.0 --luminance-format r16f)
-t10_add_extras_dump(extras_r16f ${SCENE} --luminance-format r16f)
+# At the lamps view, where 3 % of the pixels exceed Yw by up to 2.6 in ln Y (the default view has
+# fewer, and its clamp bias no longer stands clear of the R16F bound, see test_extras.cpp).
+t10_add_extras_dump(extras_r16_lights ${SCENE} --camera lights)
+t10_add_extras_dump(extras_r16f_lights ${SCENE} --camera lights --luminance-format r16f)
 # --key exact at a size where Mesa's mip chain is off (320x180: 45 -> 22 -> 11 -> 5 rows).
 t10_add_extras_dump(extras_key_exact --size 320x180 --key exact)
 # The same check must reject the mip chain's key at that size (the dump goes under the name the
