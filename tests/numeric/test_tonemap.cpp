@@ -32,7 +32,7 @@ void reportKey(const char* label, double gpuMapped, double cpuMapped) {
 }
 
 // Measured (see the test case that uses it), plus a margin.
-constexpr double kMesaNpotKeyError = 0.05;
+constexpr double kMesaNpotKeyError = 0.055;
 
 } // namespace
 
@@ -67,12 +67,12 @@ TEST_CASE("scene key at a non-power-of-two size: the error Mesa's mip chain give
     // defined. Mesa (llvmpipe, what CI runs) blits each level with a bilinear sample at the centre
     // of each destination texel; for an odd source the samples no longer fall between texel pairs,
     // so some rows get more weight than others (3 -> 1 reads only the middle one). That is not the
-    // image's mean: measured at 320x180 with the default camera, Ya comes out 3.8 % below the exact
-    // log-average (`make bench` measures it at every size: 3.2 to 3.8 % low at most, 1.53x high at
-    // 1920x1080 and 3840x2160). The bound is that error plus a margin of about a third of it, for
-    // another Mesa version or camera; a GPU may filter differently (extras' --key exact is the fix).
-    // A range mapping with another white point (the mutant "range_white_point_0_25_npot", 12 %
-    // off) or a wrong formula exceeds it.
+    // image's mean: measured at 320x180 with the default camera, Ya comes out 4.4 % above the exact
+    // log-average (`make bench` measures every size; the site's notes page, #npot-key, has the
+    // table: far worse at 1920x1080). The bound is that error plus a margin of about a quarter of
+    // it, for another Mesa version; a GPU may filter differently (extras' --key exact is the fix).
+    // A range mapping with another white point (the mutant "range_white_point_0_30_npot", about
+    // 20 % off) or a wrong formula exceeds it.
     const double relative = relativeKeyError(gpu, cpu);
     const double bound = kMesaNpotKeyError;
     CHECK(relative <= bound);
