@@ -9,7 +9,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build, the tests and the headless renders need.
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libimgui-dev xvfb xauth \
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev xvfb xauth \
             jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)

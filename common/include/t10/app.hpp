@@ -49,6 +49,7 @@ public:
     int run();
 
 private:
+    void loadScene(); // --scene (or the built-in scene) and --camera
     void resize(int width, int height);
     void handleInput(double seconds);
     void writeOutputs();

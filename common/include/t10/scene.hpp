@@ -1,14 +1,15 @@
-// The scene as it stands before Tutorial 10: a room (floor, walls) and boxes with normal mapping and
-// parallax occlusion mapping, lit per fragment (Blinn-Phong) by HDR point lights that are also drawn
-// as emissive cubes. It renders into a GL_RGBA16F accumulation texture that stays bound to texture
-// unit 15, which is what every post-process stage reads.
+// The scene as it stands before Tutorial 10, drawn from a SceneDescription (a glTF file: the built-in
+// room of tools/make_scene, or --scene FILE): normal mapping, parallax occlusion mapping where a
+// material has a depth map, per-fragment Blinn-Phong lighting from HDR point and spot lights, and
+// emissive surfaces (the bright sources bloom spreads). It renders into a GL_RGBA16F accumulation
+// texture that stays bound to texture unit 15, which is what every post-process stage reads.
 #pragma once
 #include "t10/camera.hpp"
 #include "t10/gl_object.hpp"
+#include "t10/gltf_scene.hpp"
 #include "t10/image.hpp"
 #include "t10/shader.hpp"
 
-#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -16,15 +17,10 @@ namespace t10 {
 
 constexpr GLuint kAccumulationTextureUnit = 15;
 
-struct PointLight {
-    glm::vec3 position;
-    glm::vec3 colour; // linear HDR intensity, components from about 1.5 to 15
-};
-
 class Scene {
 public:
-    // Loads the TGA textures from assetDir and the scene shaders through `shaders`.
-    Scene(const ShaderManager& shaders, const std::filesystem::path& assetDir);
+    // Uploads the description's geometry and textures; loads the scene shaders through `shaders`.
+    Scene(const ShaderManager& shaders, const SceneDescription& description);
     ~Scene();
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
@@ -41,7 +37,7 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
-    const std::vector<PointLight>& lights() const { return lights_; }
+    const std::vector<SceneLight>& lights() const { return lights_; }
     GLuint accumulationTexture() const { return accumulation_.get(); }
     GLuint accumulationFramebuffer() const { return framebuffer_.get(); }
     int width() const { return width_; }
@@ -50,11 +46,15 @@ public:
 private:
     struct Mesh;
     struct Material;
+    std::vector<SceneMaterial> description_; // the materials' settings, which materials_ point into
     std::vector<Mesh> meshes_;
     std::vector<Material> materials_;
-    std::vector<PointLight> lights_;
+    std::vector<Texture> textures_;
+    Texture whiteTexture_;  // stands in for a missing base colour or emissive texture
+    Texture flatNormalTexture_;
+    Texture flatDepthTexture_;
+    std::vector<SceneLight> lights_;
     Program surfaceProgram_;
-    Program lightProgram_;
     Buffer cameraUbo_;
     Buffer lightUbo_;
     Texture accumulation_;
