@@ -76,3 +76,24 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# The glTF loader's fuzzer (fuzz/gltf/): clang, ASan and UBSan into $(BUILD)/fuzz-gltf/, seeded with the
+# loader's test fixtures, run for FUZZ_GLTF_SECONDS (default 60; the loader was run for 1800 before it
+# was called done). Not part of `make test`.
+.PHONY: fuzz-gltf
+FUZZ_GLTF_SECONDS ?= 60
+fuzz-gltf: PACKAGES += clang libclang-rt-14-dev
+fuzz-gltf: build
+	@[ -f $(BUILD)/fuzz-gltf/build.ninja ] || CXX=clang++ cmake -S fuzz/gltf -B $(BUILD)/fuzz-gltf -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD)/fuzz-gltf -j $(JOBS)
+	$(BIN)/make_gltf_fixtures $(BUILD)/fuzz-gltf/fixtures >/dev/null
+	fuzz/gltf/run.sh $(BUILD)/fuzz-gltf $(BUILD)/fuzz-gltf/fixtures $(FUZZ_GLTF_SECONDS)
+
+# The glTF loader's speed: a generated scene of about one million triangles loaded by a release build
+# (tools/bench_gltf_load; not a test). The loader must stay under 2 s on the 2-core CI machine.
+.PHONY: bench-gltf
+bench-gltf: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
+	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
+	build-release/bin/bench_gltf_load build-release/bench/million.glb 5

@@ -32,6 +32,7 @@ constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kLightsPunctual = "KHR_lights_punctual";
 // Extensions this loader implements; a file that REQUIRES any other is refused by name.
 const std::set<std::string> kSupportedExtensions{kParallaxExtension, kEmissiveStrength, kLightsPunctual};
+constexpr std::size_t kMaxLights = 8; // the size of Scene.frag's Lights arrays
 
 // A fault in the file: caught at the top and prefixed with the file name.
 struct Fault {
@@ -348,6 +349,9 @@ public:
         traverseNodes();
         if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn at rest");
         computeBounds();
+        if (out_.lights.size() > kMaxLights)
+            warn("the file has " + std::to_string(out_.lights.size()) + " lights; the first " +
+                 std::to_string(kMaxLights) + " are used");
         if (out_.lights.empty()) addDefaultLights();
         addFramingCamera();
     }
@@ -362,6 +366,9 @@ private:
         for (const std::string& name : model_.extensionsRequired) {
             if (!kSupportedExtensions.count(name))
                 fail("requires the extension " + name + ", which this loader does not support");
+        }
+        for (const std::string& name : model_.extensionsUsed) {
+            if (!kSupportedExtensions.count(name)) warn("the optional extension " + name + " is ignored");
         }
     }
 
@@ -547,6 +554,11 @@ private:
             addLight(node, world, what);
             if (node.skin >= 0) warn(what + " is skinned; it is drawn in its rest pose");
             for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);
+        }
+        if (model_.scenes.empty()) {
+            // Every node was reachable from a root unless some of them form a cycle.
+            for (std::size_t i = 0; i < nodeCount; ++i)
+                if (!visited[i]) fail("node " + std::to_string(i) + " is part of a cycle in the node hierarchy");
         }
     }
 

@@ -52,10 +52,10 @@ set_tests_properties("gltf: -v prints the load time and the triangle count" PROP
 # Bad input through the program: exit 1, the file and the fault, and no output file.
 set(GLTF_REFUSED ${CMAKE_CURRENT_SOURCE_DIR}/gltf/expect_refused.sh)
 foreach(case
-        "bad_json.gltf;bad_json.gltf: "
-        "bad_header.glb;bad_header.glb: "
-        "bad_missing_buffer.gltf;no_such_file.bin"
-        "bad_short_buffer.gltf;bad_short_buffer.gltf: "
+        "bad_json.gltf;bad_json.gltf: .*parse error"
+        "bad_header.glb;bad_header.glb: Invalid glTF binary"
+        "bad_missing_buffer.gltf;File not found : no_such_file.bin"
+        "bad_short_buffer.gltf;bad_short_buffer.gltf: File size mismatch"
         "bad_missing_image.gltf;image 0 \\(no_such_image.png\\) is missing"
         "bad_truncated_image.gltf;truncated.png\\): cannot decode"
         "bad_accessor_range.gltf;reads past the end of buffer view 0"
@@ -63,8 +63,10 @@ foreach(case
         "bad_index.gltf;index 7 \\(element 2\\) is beyond the vertex count 3"
         "bad_nan.gltf;POSITION 2 is not finite"
         "bad_cycle.gltf;node 1 has two parents"
+        "bad_cycle_root.gltf;which is not a root"
+        "bad_cycle_sceneless.gltf;node 1 is part of a cycle"
         "bad_required_draco.gltf;requires the extension KHR_draco_mesh_compression"
-        "bad_wrong_type.gltf;bad_wrong_type.gltf: ")
+        "bad_wrong_type.gltf;bad_wrong_type.gltf: 'count' property is not a positive integer")
     list(GET case 0 file)
     list(GET case 1 message)
     add_test(NAME "gltf refuses: ${file}"
@@ -91,3 +93,54 @@ set_tests_properties("cli: --camera names a camera of the --scene file" PROPERTI
 add_test(NAME "gltf: common/assets/scene.gltf is what make_scene writes"
          COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_CURRENT_BINARY_DIR} sh -c
                  "mkdir -p gltf/scene && ${BIN}/make_scene gltf/scene/scene.gltf >/dev/null && cmp gltf/scene/scene.gltf ${PROJECT_SOURCE_DIR}/common/assets/scene.gltf && cmp gltf/scene/scene.bin ${PROJECT_SOURCE_DIR}/common/assets/scene.bin")
+
+# The example model the site renders is the emissive-cubes fixture, as the tool writes it.
+add_test(NAME "gltf: site/assets/models/emissive_cubes.glb is the fixture"
+         COMMAND ${CMAKE_COMMAND} -E compare_files ${GLTF_FIXTURES}/emissive_cubes.glb
+                 ${PROJECT_SOURCE_DIR}/site/assets/models/emissive_cubes.glb)
+set_tests_properties("gltf: site/assets/models/emissive_cubes.glb is the fixture" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+
+# The measured checks can fail: each mutant is Scene.frag with one line changed, rendered through
+# --shader-dir, and the named check must then fail.
+# t10_add_gltf_mutant(<name> <from> <to> <fixture> <camera> <test tag> <failing check regex>)
+function(t10_add_gltf_mutant name from to fixture camera testcase check)
+    file(READ ${PROJECT_SOURCE_DIR}/common/shaders/Scene.frag source)
+    string(FIND "${source}" "${from}" found)
+    if(found EQUAL -1)
+        message(FATAL_ERROR "gltf mutant ${name}: '${from}' not found in common/shaders/Scene.frag")
+    endif()
+    string(REPLACE "${from}" "${to}" mutated "${source}")
+    set(dir ${CMAKE_CURRENT_BINARY_DIR}/gltf/mutants/${name})
+    file(WRITE ${dir}/shaders/Scene.frag "${mutated}")
+    file(CREATE_LINK ${GLTF_FIXTURES} ${dir}/fixtures SYMBOLIC)
+    foreach(form "" "_embedded" "_glb")
+        if(form STREQUAL "_glb")
+            set(file ${GLTF_FIXTURES}/${fixture}.glb)
+        else()
+            set(file ${GLTF_FIXTURES}/${fixture}${form}.gltf)
+        endif()
+        add_test(NAME "gltf mutant: ${name}${form}"
+                 COMMAND ${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 1 --scene ${file} --camera ${camera}
+                         --shader-dir ${dir}/shaders --exr ${dir}/renders/${fixture}${form}_${camera}.exr)
+        set_tests_properties("gltf mutant: ${name}${form}" PROPERTIES FIXTURES_SETUP gltf_mutants
+                             FIXTURES_REQUIRED gltf_fixtures)
+    endforeach()
+    add_test(NAME "gltf measured rejects: ${name}"
+             COMMAND ${EXPECT} nonzero "${check}" -- ${CMAKE_COMMAND} -E env T10_GLTF_DIR=${dir}
+                     ${BIN}/t10_gltf_render_tests "${testcase}")
+    set_tests_properties("gltf measured rejects: ${name}" PROPERTIES FIXTURES_REQUIRED gltf_mutants)
+endfunction()
+
+t10_add_gltf_mutant(emission_clamped_to_1
+    "v3Result += v3Emissive *" "v3Result += min(v3Emissive, vec3(1.0f)) *" emissive_cubes front
+    "[emissive]" "CHECK\\( b.r == Approx\\(4.0f\\)")
+t10_add_gltf_mutant(spot_cone_ignored
+    "v3Radiance *= fCone * fCone;" "v3Radiance *= 1.0f;" lights top
+    "[spot]" "CHECK\\( outside.g < 0.1f \\* inside.g \\)")
+t10_add_gltf_mutant(emissive_map_upside_down
+    "v3Emissive * textureGrad(s2EmissiveMap, v2TexCoord," "v3Emissive * textureGrad(s2EmissiveMap, vec2(v2TexCoord.x, 1.0f - v2TexCoord.y),"
+    textures front "[textures]" "CHECK\\( top.g < 0.1f \\)")
+t10_add_gltf_mutant(light_half_a_metre_off
+    "vec3 v3ToLight = v4LightPos[i].xyz - v3Position;"
+    "vec3 v3ToLight = v4LightPos[i].xyz + vec3(0.5f, 0.0f, 0.0f) - v3Position;" lights top
+    "[point]" "CHECK\\( glm::distance\\(best, foot\\) <= 3.0f \\)")

@@ -204,6 +204,7 @@ TEST_CASE("points, lines, morph targets, skins and the rest: one warning each, t
         CHECK(hasWarning(d, "is skinned"));
         CHECK(hasWarning(d, "orthographic"));
         CHECK(hasWarning(d, "directional"));
+        CHECK(hasWarning(d, "optional extension EXT_unknown_but_optional is ignored"));
         CHECK(d.defaultLights); // the directional light was the only one
     }
 }
@@ -219,11 +220,11 @@ TEST_CASE("malformed files are refused with the file name and the fault", "[gltf
         const char* message; // regex
     };
     const Case cases[] = {
-        {"bad_json.gltf", "bad_json.gltf: .*(JSON|json|parse)"},
-        {"bad_wrong_type.gltf", "bad_wrong_type.gltf: .*count"},
-        {"bad_header.glb", "bad_header.glb: .*(length|size|Invalid|invalid)"},
-        {"bad_missing_buffer.gltf", "bad_missing_buffer.gltf: .*no_such_file.bin"},
-        {"bad_short_buffer.gltf", "bad_short_buffer.gltf: .*(mismatch|short|size)"},
+        {"bad_json.gltf", "bad_json.gltf: .*parse error at line 1, column 43"},
+        {"bad_wrong_type.gltf", "bad_wrong_type.gltf: 'count' property is not a positive integer"},
+        {"bad_header.glb", "bad_header.glb: Invalid glTF binary"},
+        {"bad_missing_buffer.gltf", "bad_missing_buffer.gltf: File not found : no_such_file.bin"},
+        {"bad_short_buffer.gltf", "bad_short_buffer.gltf: File size mismatch : .*short.bin, requestedBytes 36, but got 20"},
         {"bad_missing_image.gltf", "bad_missing_image.gltf: image 0 \\(no_such_image.png\\) is missing"},
         {"bad_truncated_image.gltf", "bad_truncated_image.gltf: .*image 0 \\(truncated.png\\): cannot decode"},
         {"bad_accessor_range.gltf", "bad_accessor_range.gltf: .*accessor 0 \\(4 elements from offset 0\\) reads past the end"},
@@ -232,6 +233,8 @@ TEST_CASE("malformed files are refused with the file name and the fault", "[gltf
         {"bad_nan.gltf", "bad_nan.gltf: .*POSITION 2 is not finite"},
         {"bad_inf.gltf", "bad_inf.gltf: .*POSITION 2 is not finite"},
         {"bad_cycle.gltf", "bad_cycle.gltf: node 1 has two parents"},
+        {"bad_cycle_root.gltf", "bad_cycle_root.gltf: scene 0 lists node 0, which is not a root \\(node cycle"},
+        {"bad_cycle_sceneless.gltf", "bad_cycle_sceneless.gltf: node 1 is part of a cycle"},
         {"bad_required_draco.gltf", "bad_required_draco.gltf: requires the extension KHR_draco_mesh_compression"},
         {"no_such_file.glb", "no_such_file.glb: cannot open file: No such file or directory"},
     };

@@ -57,7 +57,7 @@ float luminance(const glm::vec3& c) {
 
 // The accumulation buffer is RGBA16F: half floats hold 11 significant bits, so values agree with
 // the exact emission to 0.1%; 1% leaves room for filtering at the sample point and nothing else.
-TEST_CASE("emissive-strength cubes: 1, 4 and 16 times the factor, in that order", "[gltf][render]") {
+TEST_CASE("emissive-strength cubes: 1, 4 and 16 times the factor, in that order", "[gltf][render][emissive]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("emissive_cubes", form, "front");
@@ -75,7 +75,7 @@ TEST_CASE("emissive-strength cubes: 1, 4 and 16 times the factor, in that order"
     }
 }
 
-TEST_CASE("point light: the brightest floor pixel lies under the light", "[gltf][render]") {
+TEST_CASE("point light: the brightest floor pixel lies under the light", "[gltf][render][point]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("lights", form, "top");
@@ -102,7 +102,7 @@ TEST_CASE("point light: the brightest floor pixel lies under the light", "[gltf]
     }
 }
 
-TEST_CASE("spot light: lit inside the cone, dark outside it", "[gltf][render]") {
+TEST_CASE("spot light: lit inside the cone, dark outside it", "[gltf][render][spot]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("lights", form, "top");
@@ -116,7 +116,7 @@ TEST_CASE("spot light: lit inside the cone, dark outside it", "[gltf][render]") 
     }
 }
 
-TEST_CASE("named cameras: the cube appears where each camera puts it", "[gltf][render]") {
+TEST_CASE("named cameras: the cube appears where each camera puts it", "[gltf][render][cameras]") {
     for (const char* form : kForms) {
         for (const char* name : {"left", "high", "framing"}) {
             INFO("form '" << form << "' camera " << name);
@@ -150,7 +150,7 @@ TEST_CASE("named cameras: the cube appears where each camera puts it", "[gltf][r
     }
 }
 
-TEST_CASE("every encoding and transform draws its square: nine green squares, gaps between", "[gltf][render]") {
+TEST_CASE("every encoding and transform draws its square: nine green squares, gaps between", "[gltf][render][geometry]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("geometry", form, "front");
@@ -170,7 +170,7 @@ TEST_CASE("every encoding and transform draws its square: nine green squares, ga
     }
 }
 
-TEST_CASE("textures: the image's top half is at the top, sRGB 188 reads as linear 0.5", "[gltf][render]") {
+TEST_CASE("textures: the image's top half is at the top, sRGB 188 reads as linear 0.5", "[gltf][render][textures]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("textures", form, "front");
@@ -189,7 +189,7 @@ TEST_CASE("textures: the image's top half is at the top, sRGB 188 reads as linea
     }
 }
 
-TEST_CASE("a file with warnings still renders what it can", "[gltf][render]") {
+TEST_CASE("a file with warnings still renders what it can", "[gltf][render][warnings]") {
     for (const char* form : kForms) {
         INFO("form '" << form << "'");
         const Render r = load("warnings", form, "front");

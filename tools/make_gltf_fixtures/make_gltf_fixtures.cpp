@@ -532,6 +532,17 @@ void malformed(const fs::path& dir) {
     writeText(dir / "bad_cycle.gltf",
               triangleJson(ok, std::string(kTriangleViews) + kTriangleAccessors,
                            R"("nodes": [{"mesh": 0, "children": [1]}, {"children": [2]}, {"children": [1]}],)"));
+    writeText(dir / "bad_cycle_root.gltf",
+              triangleJson(ok, std::string(kTriangleViews) + kTriangleAccessors,
+                           R"("nodes": [{"mesh": 0, "children": [1]}, {"children": [0]}],)"));
+    {
+        // No scene at all: the roots are the nodes without a parent, and a cycle has none.
+        std::string json = triangleJson(ok, std::string(kTriangleViews) + kTriangleAccessors,
+                                        R"("nodes": [{"mesh": 0}, {"children": [2]}, {"children": [1]}],)");
+        const std::string scenes = R"("scene": 0, "scenes": [{"nodes": [0]}],)";
+        json.erase(json.find(scenes), scenes.size());
+        writeText(dir / "bad_cycle_sceneless.gltf", json);
+    }
     writeText(dir / "bad_required_draco.gltf",
               triangleJson(ok, std::string(R"("extensionsUsed": ["KHR_draco_mesh_compression"],
                                               "extensionsRequired": ["KHR_draco_mesh_compression"],)") +
@@ -578,6 +589,8 @@ void big(const std::string& path, long triangles) {
     tinygltf::Node node;
     node.mesh = b.mesh("grid", {prim});
     b.node(node);
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent);
     b.write(path, true, "");
     std::cout << "wrote " << path << " (" << idx.size() / 3 << " triangles)\n";
 }
