@@ -11,6 +11,7 @@ set_tests_properties("gltf: write the fixtures" PROPERTIES FIXTURES_SETUP gltf_f
 
 add_executable(t10_gltf_tests gltf/test_gltf_loader.cpp)
 target_link_libraries(t10_gltf_tests PRIVATE t10_common t10_flags Catch2::Catch2WithMain)
+target_compile_definitions(t10_gltf_tests PRIVATE T10_TEST_FIXTURE_DIR="${CMAKE_CURRENT_SOURCE_DIR}/fixtures")
 catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
                      PROPERTIES FIXTURES_REQUIRED gltf_fixtures ENVIRONMENT T10_GLTF_FIXTURES=${GLTF_FIXTURES})
 

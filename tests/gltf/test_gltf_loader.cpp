@@ -262,3 +262,10 @@ TEST_CASE("limits: too many triangles after instancing are refused", "[gltf]") {
     limits.allowExternalFiles = false;
     CHECK_THROWS_WITH(t10::loadGltfScene(fixture("geometry.gltf"), limits), Catch::Contains("geometry.bin"));
 }
+
+TEST_CASE("fuzzer findings stay fixed", "[gltf]") {
+    // A GLB whose embedded JPEG declares Huffman tables of more than 256 codes: Debian's stb_image
+    // wrote past its tables (found by fuzz/gltf under UBSan); the loader refuses it first.
+    CHECK_THROWS_WITH(t10::loadGltfScene(std::string(T10_TEST_FIXTURE_DIR) + "/gltf/fuzz_jpeg_huffman_overflow.glb"),
+                      Catch::Contains("image 1: corrupt JPEG (a Huffman table with more than 256 codes)"));
+}
