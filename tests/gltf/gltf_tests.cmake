@@ -95,11 +95,10 @@ add_test(NAME "gltf: common/assets/scene.gltf is what make_scene writes"
          COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_CURRENT_BINARY_DIR} sh -c
                  "mkdir -p gltf/scene && ${BIN}/make_scene gltf/scene/scene.gltf >/dev/null && cmp gltf/scene/scene.gltf ${PROJECT_SOURCE_DIR}/common/assets/scene.gltf && cmp gltf/scene/scene.bin ${PROJECT_SOURCE_DIR}/common/assets/scene.bin")
 
-# The example model the site renders is the emissive-cubes fixture, as the tool writes it.
-add_test(NAME "gltf: site/assets/models/emissive_cubes.glb is the fixture"
-         COMMAND ${CMAKE_COMMAND} -E compare_files ${GLTF_FIXTURES}/emissive_cubes.glb
-                 ${PROJECT_SOURCE_DIR}/site/assets/models/emissive_cubes.glb)
-set_tests_properties("gltf: site/assets/models/emissive_cubes.glb is the fixture" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+# The example model the site renders is what the tool writes.
+add_test(NAME "gltf: site/assets/models/bloom_example.glb is what make_gltf_fixtures --example writes"
+         COMMAND ${CMAKE_COMMAND} -E chdir ${CMAKE_CURRENT_BINARY_DIR} sh -c
+                 "${BIN}/make_gltf_fixtures --example gltf/example/bloom_example.glb && cmp gltf/example/bloom_example.glb ${PROJECT_SOURCE_DIR}/site/assets/models/bloom_example.glb")
 
 # The measured checks can fail: each mutant is Scene.frag with one line changed, rendered through
 # --shader-dir, and the named check must then fail.

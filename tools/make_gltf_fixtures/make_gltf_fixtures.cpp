@@ -1,5 +1,6 @@
 // make_gltf_fixtures OUT_DIR          the glTF loader's test fixtures (tests/gltf/)
 // make_gltf_fixtures --big N OUT.glb  one mesh of about N triangles (the load-time benchmark)
+// make_gltf_fixtures --example OUT.glb the model the site renders (site/assets/models/)
 //
 // Each feature fixture is a tiny scene built so that one property can be measured in the rendered
 // HDR frame (see tests/gltf/test_gltf_render.cpp for what is measured). Every one is written three
@@ -558,6 +559,47 @@ void malformed(const fs::path& dir) {
     }
 }
 
+// The example the site shows (site/assets/models/bloom_example.glb): a dim grey corner (floor and
+// back wall) lit by one point light, with three emissive cubes of strength 2, 8 and 32 on the
+// floor; camera "front". The backdrop gives the tone map's key something to adapt to, so that
+// only the bright cubes burn out and bloom.
+void example(const std::string& path) {
+    Builder b;
+    camera(b, "front", {0, 1.8f, 6.5f}, {0, 0.7f, 0}, 45);
+    const int grey = b.material(matte("backdrop", {0.45f, 0.42f, 0.4f}));
+    auto quad = [&](const std::string& name, glm::vec3 origin, glm::vec3 u, glm::vec3 v) {
+        const glm::vec3 n = glm::normalize(glm::cross(u, v));
+        tinygltf::Primitive p;
+        p.material = grey;
+        p.attributes["POSITION"] = b.floats(std::vector<glm::vec3>{origin, origin + u, origin + u + v, origin + v}, true);
+        p.attributes["NORMAL"] = b.floats(std::vector<glm::vec3>(4, n));
+        p.indices = b.indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
+        tinygltf::Node node;
+        node.name = name;
+        node.mesh = b.mesh(name, {p});
+        b.node(node);
+    };
+    quad("floor", {-6, 0, 4}, {12, 0, 0}, {0, 0, -7});
+    quad("wall", {-6, 0, -3}, {12, 0, 0}, {0, 6, 0});
+    const glm::vec3 colours[3] = {{1.0f, 0.45f, 0.15f}, {0.25f, 0.55f, 1.0f}, {1.0f, 0.95f, 0.85f}};
+    const float strengths[3] = {2, 8, 32};
+    for (int i = 0; i < 3; ++i) {
+        const int m = b.material(emissive("glow " + std::to_string(int(strengths[i])), colours[i], strengths[i], b));
+        tinygltf::Node n = at("cube " + std::to_string(i), {-2.0f + 2.0f * float(i), 0.5f, 0});
+        n.rotation = {0, 0.2588190451, 0, 0.9659258263}; // 30 degrees about +Y
+        n.mesh = b.mesh("cube", {cube(b, m)});
+        b.node(n);
+    }
+    tinygltf::Light light;
+    light.type = "point";
+    light.color = {1, 0.9, 0.8};
+    light.intensity = 6;
+    b.light(b.node(at("lamp", {-1, 4, 3})), light);
+    const fs::path parent = fs::path(path).parent_path();
+    if (!parent.empty()) fs::create_directories(parent);
+    b.write(path, true, "");
+}
+
 // One mesh of about `triangles` triangles: a grid with positions, normals, UVs and u32 indices.
 void big(const std::string& path, long triangles) {
     const int side = std::max(2, static_cast<int>(std::sqrt(static_cast<double>(triangles) / 2.0)));
@@ -599,12 +641,16 @@ void big(const std::string& path, long triangles) {
 
 int main(int argc, char** argv) {
     try {
+        if (argc == 3 && std::string(argv[1]) == "--example") {
+            example(argv[2]);
+            return 0;
+        }
         if (argc == 4 && std::string(argv[1]) == "--big") {
             big(argv[3], std::stol(argv[2]));
             return 0;
         }
         if (argc != 2) {
-            std::cerr << "usage: make_gltf_fixtures OUT_DIR | make_gltf_fixtures --big TRIANGLES OUT.glb\n";
+            std::cerr << "usage: make_gltf_fixtures OUT_DIR | --big TRIANGLES OUT.glb | --example OUT.glb\n";
             return 2;
         }
         const fs::path dir = argv[1];
