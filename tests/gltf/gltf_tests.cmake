@@ -17,7 +17,7 @@ catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
 
 # Renders: <fixture><form>_<camera>.exr for the three forms of each fixture.
 foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "cameras;framing" "geometry;front"
-             "textures;front" "warnings;front")
+             "textures;front" "materials;front" "warnings;front")
     list(GET spec 0 name)
     list(GET spec 1 camera)
     foreach(form "" "_embedded" "_glb")
@@ -144,3 +144,6 @@ t10_add_gltf_mutant(light_half_a_metre_off
     "vec3 v3ToLight = v4LightPos[i].xyz - v3Position;"
     "vec3 v3ToLight = v4LightPos[i].xyz + vec3(0.5f, 0.0f, 0.0f) - v3Position;" lights top
     "[point]" "CHECK\\( glm::distance\\(best, foot\\) <= 3.0f \\)")
+t10_add_gltf_mutant(double_sided_ignored
+    "if (!gl_FrontFacing) {" "if (!gl_FrontFacing) { discard; }\n    if (false) {" materials front
+    "[materials]" "CHECK\\( twoSided.g == Approx\\(2.0f\\)")

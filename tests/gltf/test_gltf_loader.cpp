@@ -209,6 +209,20 @@ TEST_CASE("points, lines, morph targets, skins and the rest: one warning each, t
     }
 }
 
+TEST_CASE("double-sided and alpha modes are read", "[gltf]") {
+    for (const char* form : kForms) {
+        INFO(form);
+        const t10::SceneDescription d = t10::loadGltfScene(fixture(std::string("materials") + form));
+        REQUIRE(d.materials.size() == 6); // five, then the default material
+        CHECK(d.materials[1].doubleSided);
+        CHECK_FALSE(d.materials[2].doubleSided);
+        CHECK(d.materials[3].alphaMode == t10::AlphaMode::Mask);
+        CHECK(d.materials[3].alphaCutoff == Approx(0.5f));
+        CHECK(d.materials[4].alphaMode == t10::AlphaMode::Blend);
+        CHECK(d.materials[4].baseColour.a == Approx(0.5f));
+    }
+}
+
 TEST_CASE("a chain of 100000 nodes loads without recursion", "[gltf]") {
     const t10::SceneDescription d = t10::loadGltfScene(fixture("deep_chain.gltf"));
     CHECK(d.triangleCount == 1);

@@ -196,3 +196,22 @@ TEST_CASE("a file with warnings still renders what it can", "[gltf][render][warn
         CHECK(r.at(glm::vec3(0, 0, 0)).r == Approx(2.0f).epsilon(0.01));
     }
 }
+
+TEST_CASE("double-sided, single-sided, MASK and BLEND over an emissive backdrop", "[gltf][render][materials]") {
+    for (const char* form : kForms) {
+        INFO("form '" << form << "'");
+        const Render r = load("materials", form, "front");
+        const glm::vec3 twoSided = r.at(glm::vec3(-1.5f, 0, 0));
+        const glm::vec3 culled = r.at(glm::vec3(0, 0, 0));
+        const glm::vec3 masked = r.at(glm::vec3(1.5f, 0, 0));
+        const glm::vec3 blended = r.at(glm::vec3(0, 1.5f, 0));
+        // Emission is exact in half floats to 0.1%; 1% as elsewhere.
+        CHECK(twoSided.g == Approx(2.0f).epsilon(0.01)); // seen from behind, still drawn
+        CHECK(culled.r < 0.01f);                          // back face culled: the backdrop shows
+        CHECK(culled.b == Approx(1.0f).epsilon(0.01));
+        CHECK(masked.r < 0.01f);                          // alpha 0.3 below the cutoff: discarded
+        CHECK(masked.b == Approx(1.0f).epsilon(0.01));
+        CHECK(blended.r == Approx(1.0f).epsilon(0.01));   // half of red 2 over half of blue 1
+        CHECK(blended.b == Approx(0.5f).epsilon(0.01));
+    }
+}

@@ -407,6 +407,44 @@ void textures(const fs::path& dir) {
     });
 }
 
+// Double-sided and alpha modes over a blue emissive backdrop (z = -2), seen by camera "front":
+// left, a double-sided green square turned away from the camera (drawn); middle, the same but
+// single-sided (culled: backdrop); right, a MASK square with alpha 0.3 < cutoff 0.5 (discarded:
+// backdrop); top, a BLEND square, red emission 2 at alpha 0.5 (half red, half backdrop).
+void materials(const fs::path& dir) {
+    writeThreeWays(dir, "materials", {}, [](Builder& b, const std::vector<int>&) {
+        camera(b, "front", {0, 0, 6}, {0, 0, 0}, 45);
+        const Square s;
+        auto square = [&](const std::string& name, const tinygltf::Material& m, glm::vec3 at_, float scale, bool away) {
+            const int material = b.material(m);
+            tinygltf::Primitive p;
+            p.material = material;
+            p.attributes["POSITION"] = b.floats(s.positions, true);
+            p.attributes["NORMAL"] = b.floats(s.normals);
+            p.indices = b.indices({0, 1, 2, 0, 2, 3}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE);
+            tinygltf::Node n = at(name, at_);
+            n.scale = {scale, scale, scale};
+            if (away) n.rotation = {0, 1, 0, 0}; // half a turn about +Y: the front faces -Z
+            n.mesh = b.mesh(name, {p});
+            b.node(n);
+        };
+        square("backdrop", emissive("blue", {0, 0, 1}, 1, b), {0, 0, -2}, 20, false);
+        tinygltf::Material twoSided = emissive("green", {0, 1, 0}, 2, b);
+        twoSided.doubleSided = true;
+        square("double-sided", twoSided, {-1.5f, 0, 0}, 1, true);
+        square("single-sided", emissive("red", {1, 0, 0}, 2, b), {0, 0, 0}, 1, true);
+        tinygltf::Material mask = emissive("masked", {1, 0, 0}, 2, b);
+        mask.alphaMode = "MASK";
+        mask.alphaCutoff = 0.5;
+        mask.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 0.3};
+        square("mask", mask, {1.5f, 0, 0}, 1, false);
+        tinygltf::Material blend = emissive("blended", {1, 0, 0}, 2, b);
+        blend.alphaMode = "BLEND";
+        blend.pbrMetallicRoughness.baseColorFactor = {0, 0, 0, 0.5};
+        square("blend", blend, {0, 1.5f, 0}, 1, false);
+    });
+}
+
 // Things drawn at rest or skipped with a warning: points, lines, a morph target, a skin, an
 // orthographic camera, a directional light; plus one emissive square that must still render.
 void warnings(const fs::path& dir) {
@@ -660,6 +698,7 @@ int main(int argc, char** argv) {
         cameras(dir);
         geometry(dir);
         textures(dir);
+        materials(dir);
         warnings(dir);
         malformed(dir);
         std::cout << "wrote the glTF fixtures into " << dir.string() << "\n";
