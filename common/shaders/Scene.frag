@@ -112,7 +112,7 @@ void main() {
     // Trim fragments whose displaced coordinate leaves this face's UV rectangle, so edges show
     // depth instead of the texture wrapping around. The bounds are per face: room faces tile the
     // texture across the whole face, which reaches a little past the room's corners (see
-    // scene.cpp), and crate faces span [0, 1].
+    // tools/make_scene), and crate faces span [0, 1].
     if (any(lessThan(v2TexCoord, v4UVBounds.xy)) || any(greaterThan(v2TexCoord, v4UVBounds.zw))) discard;
     float fDepth = v3Parallax.z;
 
