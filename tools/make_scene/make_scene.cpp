@@ -10,6 +10,7 @@
 // colour) on nodes that also carry the emissive light cubes, and the parallax depth map, scale,
 // shininess and specular weight go into the T10_materials_parallax extension (site/building.md).
 #include "gltf_builder.hpp"
+#include "t10/camera.hpp"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -48,14 +49,7 @@ struct PointLight {
     glm::vec3 colour; // linear HDR intensity, components from about 1.5 to 15
 };
 
-struct CameraPreset {
-    std::string name;
-    std::string description;
-    glm::vec3 position;
-    float yawDegrees;   // 0 looks down -Z, positive turns right (towards +X)
-    float pitchDegrees; // positive looks up
-    float fovDegrees;   // vertical field of view
-};
+using t10::CameraPreset; // name, description, position, yaw, pitch, field of view
 
 struct Vertex {
     glm::vec3 position;
