@@ -111,12 +111,12 @@ bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string*
                      image->mimeType == "image/tga";
     Image8 decoded;
     if (tga) {
-        TgaResult result = decodeTga(bytes, static_cast<std::size_t>(size), label);
-        if (!result.ok()) {
-            if (err) *err += result.error + "\n";
+        try {
+            decoded = decodeTga(bytes, static_cast<std::size_t>(size), label);
+        } catch (const Error& error) {
+            if (err) *err += std::string(error.what()) + "\n"; // "<label>: <fault>"
             return false;
         }
-        decoded = std::move(result.image);
     } else {
         const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
         const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
@@ -173,14 +173,15 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
         if (err) *err += path + ": external files are not read here\n";
         return false;
     }
-    std::error_code error;
-    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    std::error_code ignored;
+    if (std::filesystem::exists(path, ignored) && !std::filesystem::is_regular_file(path, ignored)) {
         if (err) *err += path + ": not a regular file\n"; // a device or FIFO could be endless
         return false;
     }
-    std::string fault;
-    if (!readFile(path, *out, fault)) {
-        if (err) *err += path + ": " + fault + "\n";
+    try {
+        *out = readFile(path);
+    } catch (const Error& error) {
+        if (err) *err += std::string(error.what()) + "\n"; // "<path>: cannot open file: <reason>"
         return false;
     }
     return true;
@@ -1020,9 +1021,7 @@ std::string builtInScenePath() {
 }
 
 SceneDescription loadGltfScene(const std::string& path, const GltfLoadLimits& limits) {
-    std::vector<std::uint8_t> bytes;
-    std::string fault;
-    if (!readFile(path, bytes, fault)) throw Error(path + ": " + fault);
+    const std::vector<std::uint8_t> bytes = readFile(path); // throws "<path>: cannot open file: <reason>"
     const std::string baseDir = std::filesystem::path(path).parent_path().string();
     return load(bytes.data(), bytes.size(), path, baseDir.empty() ? "." : baseDir, limits);
 }

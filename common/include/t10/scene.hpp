@@ -5,6 +5,7 @@
 // texture that stays bound to texture unit 15, which is what every post-process stage reads.
 #pragma once
 #include "t10/camera.hpp"
+#include "t10/contract.hpp"
 #include "t10/gl_object.hpp"
 #include "t10/gltf_scene.hpp"
 #include "t10/image.hpp"
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace t10 {
-
-constexpr GLuint kAccumulationTextureUnit = 15;
 
 class Scene {
 public:
@@ -37,9 +36,7 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
-    const std::vector<SceneLight>& lights() const { return lights_; }
     GLuint accumulationTexture() const { return accumulation_.get(); }
-    GLuint accumulationFramebuffer() const { return framebuffer_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }
 
