@@ -44,7 +44,8 @@ layout(location = 5) flat in vec4 v4UVBounds;
 
 layout(location = 0) out vec4 v4Colour;
 
-const float kAmbient = 0.025f;
+// Dim: the room is lit by its few bright sources, and the corners they do not reach stay near black.
+const float kAmbient = 0.002f;
 // Inverse-square falloff, softened so it stays finite very close to a light.
 const float kFalloffSoftening = 0.05f;
 

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iostream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,15 @@ constexpr float kFloorMetresPerUv = 2.0f;
 constexpr float kCeilingMetresPerUv = 2.5f; // the crate texture, as 2.5 m timber panels
 
 constexpr float kLightCubeHalfSize = 0.12f;
+// --- The scene's light (the HDR content; see the light list and the window below). ---------------
+// A lamp cube's surface radiance per unit of the intensity it lights the room with: small sources
+// are far brighter than the light they cast (a 0.24 m cube of intensity 1 shows luminance 60).
+constexpr float kLampRadiancePerIntensity = 40.0f;
+// The window in the back wall: x in [-1.2, 1.2], y in [1.6, 3.1], daylight radiance times the tile
+// texture (its grout reads as the frame between the panes): luminance about 60 on the panes.
+const glm::vec3 kWindowMin{-0.8f, 1.9f, -7.97f};
+const glm::vec2 kWindowSize{1.6f, 1.0f};
+const glm::vec3 kWindowEmission{20.0f, 22.0f, 27.0f};
 
 // The parallax scales must match the normal maps' depth in make_textures.cpp (scale x 256 texels).
 constexpr float kBrickParallax = 0.04f;
@@ -46,7 +56,7 @@ constexpr float kCrateParallax = 0.06f;
 
 struct PointLight {
     glm::vec3 position;
-    glm::vec3 colour; // linear HDR intensity, components from about 1.5 to 15
+    glm::vec3 colour; // linear HDR intensity it lights the room with (components up to 2.4); its cube shows 40x that
 };
 
 using t10::CameraPreset; // name, description, position, yaw, pitch, field of view
@@ -176,14 +186,16 @@ void writeScene(const std::string& path) {
 
     // The camera presets: glTF cameras on nodes listed first, so "default" is the scene's first.
     const std::vector<CameraPreset> presets{
-        {"default", "Looks into the room: the coloured lights, the brick walls, the tiled floor and the crates",
+        {"default", "Looks into the room: the window, the lamps, the brick walls, the tiled floor and the crates",
          {0.0f, 1.6f, 1.5f}, 0.0f, -6.0f, 60.0f},
         {"floor", "Low grazing view along the tiled floor, where parallax occlusion depth is most visible",
          {-3.2f, 0.35f, 0.8f}, 28.0f, -3.0f, 55.0f},
-        {"lights", "Close to the white light (the brightest pixels) and the blue light by the right wall",
+        {"lights", "Closer to the lamps: the white one, the warm one on the crate, the blue one and the window",
          {1.2f, 1.9f, -1.6f}, 4.0f, -3.0f, 60.0f},
         {"crates", "Three-quarter view of the crates, showing POM edges trimmed at the faces",
          {0.4f, 1.8f, -1.4f}, -12.0f, -19.0f, 55.0f},
+        {"dark", "Turned away from the window and the lamps, towards the unlit end of the room: the exposure opens up",
+         {0.5f, 1.6f, -3.0f}, 172.0f, -4.0f, 60.0f},
     };
     for (const CameraPreset& preset : presets) {
         tinygltf::Camera camera;
@@ -207,24 +219,51 @@ void writeScene(const std::string& path) {
         b.node(node);
     }
 
-    auto loadMaterial = [&](const std::string& name, float parallaxScale, float shininess, float specular) {
-        auto texture = [&](const char* kind) { return b.texture(b.imageUri(name + kind)); };
-        tinygltf::Material m;
-        m.name = name;
-        m.pbrMetallicRoughness.baseColorTexture.index = texture("_diffuse.tga");
-        m.normalTexture.index = texture("_normal.tga");
-        m.extensions["T10_materials_parallax"] =
-            parallaxExtension(texture("_depth.tga"), parallaxScale, shininess, specular);
-        return b.material(m);
+    // The materials as scene.cpp made them; each becomes a glTF material in this order, so the
+    // indices below are the glTF ones. Images are shared by file name.
+    struct Material {
+        tinygltf::Material gltf;
+        glm::vec3 emission{0.0f}; // light the surface gives off (times its albedo); only the window
     };
-    std::vector<int> materials_;
+    std::map<std::string, int> textureOf;
+    auto loadMaterial = [&](const std::string& name, float parallaxScale, float shininess, float specular) {
+        auto texture = [&](const char* kind) {
+            const std::string file = name + kind;
+            if (!textureOf.count(file)) textureOf[file] = b.texture(b.imageUri(file));
+            return textureOf[file];
+        };
+        Material m;
+        m.gltf.name = name;
+        m.gltf.pbrMetallicRoughness.baseColorTexture.index = texture("_diffuse.tga");
+        m.gltf.normalTexture.index = texture("_normal.tga");
+        m.gltf.extensions["T10_materials_parallax"] =
+            parallaxExtension(texture("_depth.tga"), parallaxScale, shininess, specular);
+        return m;
+    };
+    std::vector<Material> materials_;
     // Bricks are rough, the polished stone tiles glossy, the wood in between.
     materials_.push_back(loadMaterial("bricks", kBrickParallax, 24.0f, 0.25f));
     materials_.push_back(loadMaterial("tiles", kTileParallax, 96.0f, 0.6f));
     materials_.push_back(loadMaterial("crate", kCrateParallax, 32.0f, 0.3f));
-    const int kBricks = materials_[0];
-    const int kTiles = materials_[1];
-    const int kCrate = materials_[2];
+    materials_.push_back(loadMaterial("tiles", 0.0f, 1.0f, 0.0f)); // the window: flat, unlit panes
+    materials_.back().emission = kWindowEmission;
+    constexpr int kBricks = 0;
+    constexpr int kTiles = 1;
+    constexpr int kCrate = 2;
+    constexpr int kWindow = 3;
+
+    for (Material& m : materials_) {
+        if (m.emission != glm::vec3(0.0f)) {
+            // Emission times albedo: the diffuse map as the emissive map, the colour as factor x strength.
+            const float peak = std::max({m.emission.r, m.emission.g, m.emission.b});
+            m.gltf.emissiveTexture.index = m.gltf.pbrMetallicRoughness.baseColorTexture.index;
+            m.gltf.emissiveFactor = {m.emission.r / peak, m.emission.g / peak, m.emission.b / peak};
+            tinygltf::Value::Object strength;
+            strength["emissiveStrength"] = number(peak);
+            m.gltf.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
+        }
+        b.material(m.gltf);
+    }
 
     const float w = kRoomMaxX - kRoomMinX;
     const float d = kRoomMaxZ - kRoomMinZ;
@@ -235,7 +274,7 @@ void writeScene(const std::string& path) {
 
     // Each mesh gets a node at the origin (the geometry is built in world space); material -1 marks
     // the light cube, which becomes one node per light below instead.
-    const char* meshNames[] = {"crates", "floor", "ceiling", "walls"};
+    const char* meshNames[] = {"crates", "floor", "ceiling", "walls", "window"};
     int meshCount = 0;
     tinygltf::Primitive lightCube;
     auto addMesh = [&](const MeshData& data, int material) {
@@ -274,32 +313,39 @@ void writeScene(const std::string& path) {
     walls.addRoomFace({kRoomMaxX, 0, kRoomMinZ}, {0, 0, d}, {0, h, 0}, kWallMetresPerUv, wallMargin);  // right
     addMesh(walls, kBricks);
 
+    // The window: 4 x 2 panes of the tile texture, facing into the room just in front of the wall.
+    MeshData window;
+    window.addQuad(kWindowMin, {kWindowSize.x, 0, 0}, {0, kWindowSize.y, 0}, {0, 0}, {1.0f, 0.5f}, {0, 0, 1, 0.5f});
+    addMesh(window, kWindow);
+
     MeshData cube;
     cube.addBox({0.0f, -1.0f, 0.0f}, 2.0f, 0.0f, true); // spans [-1, 1]; Light.vert scales it
     addMesh(cube, -1);
 
-    // Linear HDR intensities from 1.5 to 15, as in the LearnOpenGL bloom scene: white high in the
-    // middle of the room, red by the left wall, blue by the right wall, green low over the floor
-    // (grazing light shows the tiles' relief), and a dim warm fill under the ceiling behind the
-    // default view.
+    // A dim room lit by a few small, very bright sources: the daylight through the window (a light
+    // just outside it, its cube hidden by the wall), a white lamp hanging in the middle, a warm lamp
+    // on the big crate, a red lamp by the left wall and a blue one by the right wall. Intensities
+    // are linear HDR; the cubes show kLampRadiancePerIntensity times as much.
     lights_ = {
-        {{0.0f, 2.1f, -3.9f}, {15.0f, 15.0f, 15.0f}},
-        {{-3.6f, 1.2f, -3.0f}, {10.0f, 0.0f, 0.0f}},
-        {{3.4f, 1.9f, -4.6f}, {0.0f, 0.0f, 15.0f}},
-        {{0.6f, 0.9f, -2.4f}, {0.0f, 5.0f, 0.0f}},
-        {{0.0f, 3.2f, 0.5f}, {1.5f, 1.3f, 1.1f}},
+        {{0.0f, 2.4f, -8.15f}, {0.6f, 0.7f, 0.85f}},
+        {{-1.3f, 2.3f, -4.0f}, {2.0f, 2.0f, 2.0f}},
+        {{1.9f, 1.35f, -5.8f}, {2.4f, 1.5f, 0.7f}},
+        {{-4.1f, 1.9f, -3.0f}, {1.2f, 0.15f, 0.08f}},
+        {{4.1f, 2.1f, -4.6f}, {0.1f, 0.25f, 1.4f}},
     };
 
     for (std::size_t i = 0; i < lights_.size(); ++i) {
         const PointLight& light = lights_[i];
         const float peak = std::max({light.colour.r, light.colour.g, light.colour.b});
         const glm::vec3 colour = light.colour / peak;
+        // The cube's emission: the lamp's surface, kLampRadiancePerIntensity times its intensity.
+        const float cubeStrength = peak * kLampRadiancePerIntensity;
         tinygltf::Material m;
         m.name = "light " + std::to_string(i);
         m.pbrMetallicRoughness.baseColorFactor = {0.0, 0.0, 0.0, 1.0}; // emission only, unlit
         m.emissiveFactor = {colour.r, colour.g, colour.b};
         tinygltf::Value::Object strength;
-        strength["emissiveStrength"] = number(peak);
+        strength["emissiveStrength"] = number(cubeStrength);
         m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
         m.extensions["T10_materials_parallax"] = parallaxExtension(-1, 0.0f, 1.0f, 0.0f);
         const int material = b.material(m);
