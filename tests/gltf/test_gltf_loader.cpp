@@ -29,15 +29,16 @@ bool hasWarning(const t10::SceneDescription& d, const std::string& text) {
 
 } // namespace
 
-TEST_CASE("the built-in scene: four camera presets, five lights, POM materials", "[gltf]") {
+TEST_CASE("the built-in scene: five camera presets, five lights, POM materials, the window", "[gltf]") {
     const t10::SceneDescription d = t10::loadGltfScene(t10::builtInScenePath());
     INFO(d.cameraNames());
-    REQUIRE(d.cameras.size() == 5); // default, floor, lights, crates, then the loader's framing camera
+    REQUIRE(d.cameras.size() == 6); // default, floor, lights, crates, dark, then the loader's framing camera
     CHECK(d.cameras[0].name == "default");
     CHECK(d.findCamera("floor") != nullptr);
     CHECK(d.findCamera("lights") != nullptr);
     CHECK(d.findCamera("crates") != nullptr);
-    CHECK(d.cameras[4].name == "framing");
+    CHECK(d.findCamera("dark") != nullptr);
+    CHECK(d.cameras[5].name == "framing");
     CHECK(d.findCamera("Default") == nullptr); // names are case-sensitive
     for (const t10::CameraPreset& c : d.cameras) {
         CHECK_FALSE(c.description.empty());
@@ -54,22 +55,31 @@ TEST_CASE("the built-in scene: four camera presets, five lights, POM materials",
 
     REQUIRE(d.lights.size() == 5);
     CHECK_FALSE(d.defaultLights);
-    // The white light: (0, 2.1, -3.9), HDR colour 15.
-    CHECK(d.lights[0].position.y == Approx(2.1f));
-    CHECK(d.lights[0].intensity.r == Approx(15.0f));
-    CHECK(d.lights[1].intensity.r == Approx(10.0f)); // red
-    CHECK(d.lights[1].intensity.g == 0.0f);
+    // The daylight behind the window, then the white lamp, as tools/make_scene lists them.
+    CHECK(d.lights[0].position.z == Approx(-8.15f));
+    CHECK(d.lights[0].intensity.b == Approx(0.85f));
+    CHECK(d.lights[1].position.x == Approx(-1.3f));
+    CHECK(d.lights[1].intensity.r == Approx(2.0f));
     CHECK(d.warnings.empty());
 
     int pom = 0;
-    for (const t10::SceneMaterial& m : d.materials)
-        if (m.depthTexture >= 0) {
+    int emissive = 0;
+    for (const t10::SceneMaterial& m : d.materials) {
+        if (m.parallaxScale > 0.0f) {
             ++pom;
-            CHECK(m.parallaxScale > 0.0f);
+            CHECK(m.depthTexture >= 0);
             CHECK(m.baseColourTexture >= 0);
             CHECK(m.normalTexture >= 0);
         }
+        if (m.emissiveTexture >= 0) ++emissive; // the window: daylight times the tile texture
+    }
     CHECK(pom == 3);
+    CHECK(emissive == 1);
+    // Each lamp's cube shows 40 times the intensity it lights the room with.
+    bool whiteCube = false;
+    for (const t10::SceneMaterial& m : d.materials)
+        if (m.emissive.r == Approx(80.0f) && m.emissive.g == Approx(80.0f)) whiteCube = true;
+    CHECK(whiteCube);
     // Every mesh's UV bounds hold its UVs (the parallax edge discard would trim everything otherwise).
     for (const t10::SceneMesh& mesh : d.meshes)
         for (const t10::SceneVertex& v : mesh.vertices) {
