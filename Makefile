@@ -27,6 +27,8 @@ help:
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
+	@echo "make fuzz-gltf  fuzz the glTF loader (clang, ASan, UBSan) for FUZZ_GLTF_SECONDS (default 60)"
+	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
 	@echo "make help   this list"
