@@ -4,6 +4,7 @@
 #include "gl_context.hpp"
 
 #include "t10/gl_object.hpp"
+#include "t10/gltf_scene.hpp"
 #include "t10/interactive.hpp"
 #include "t10/readback.hpp"
 #include "t10/scene.hpp"
@@ -37,9 +38,10 @@ void paint(const t10::Scene& scene) {
 TEST_CASE("render-on-change skips an unchanged view and redraws a still one at full quality", "[scene]") {
     const auto context = t10::test::makeTestContext();
     const t10::ShaderManager shaders({T10_COMMON_SHADER_DIR});
-    t10::Scene scene(shaders, T10_ASSET_DIR);
+    const t10::SceneDescription description = t10::loadGltfScene(t10::builtInScenePath());
+    t10::Scene scene(shaders, description);
     scene.resize(kSide, kSide);
-    t10::Camera camera(*t10::findCameraPreset("default"));
+    t10::Camera camera(description.cameras.front());
     t10::Camera moved = camera;
     moved.look(40.0f, 25.0f); // a grazing view of the floor: the parallax search needs many layers
 

@@ -22,6 +22,7 @@
 #include "t10/error.hpp"
 #include "t10/exact_key.hpp"
 #include "t10/gl_errors.hpp"
+#include "t10/gltf_scene.hpp"
 #include "t10/quad.hpp"
 #include "t10/readback.hpp"
 #include "t10/scene.hpp"
@@ -592,8 +593,10 @@ int runBench(const Options& options) {
     const t10::ShaderManager benchShaders({T10_BENCH_SHADER_DIR, T10_COMMON_SHADER_DIR});
     const Programs programs(tutorialShaders, benchShaders);
     t10::ExactKey exactKey(benchShaders);
-    t10::Scene scene(tutorialShaders, T10_ASSET_DIR);
-    const t10::Camera camera(*t10::findCameraPreset("default"));
+    // The built-in scene from its first (default) camera, as every stage renders it.
+    const t10::SceneDescription description = t10::loadGltfScene(t10::builtInScenePath());
+    t10::Scene scene(tutorialShaders, description);
+    const t10::Camera camera(description.cameras.front());
     t10::FullScreenQuad quad;
 
     const std::vector<std::pair<std::string, Chain>> chains = {
