@@ -17,6 +17,7 @@
 
 // [step 37] The exercises' panel (Dear ImGui and extras/Panel.cpp), options (CLI11) and keys (GLFW)
 #include "t10/panel.hpp"
+#include "t10/views_panel.hpp"
 
 #include <CLI/CLI.hpp>
 #include <GLFW/glfw3.h>
@@ -440,6 +441,9 @@ void GL_RenderPanel()
     }
     // [/step 40]
 
+    t10::ui::heading("Views (V, Shift+V)");
+    t10::ui::viewList(g_pApp->views());
+
     ImGui::Spacing();
     ImGui::TextDisabled("R resets every setting, H hides this panel");
     g_Panel.end();
@@ -554,9 +558,10 @@ void GL_Render(t10::App& app)
     // [step 40] Check the scene key
     GL_CheckSceneKey();
     // [/step 40]
-    // [step 37] Shortcuts and the panel, drawn over the finished frame
+    // [step 37] Shortcuts and the panel, drawn over the finished frame (and over the selected view)
     if (g_Panel.active() && !g_bBenchRunning) {
         GL_HandleKeys();
+        app.views().draw(app.quad(), g_iWindowWidth, g_iWindowHeight);
         if (g_bShowPanel) GL_RenderPanel();
     }
     // [/step 37]
@@ -635,7 +640,8 @@ void GL_AddOptions(CLI::App& cli)
                "  PageUp / PageDown  blur passes +1 / -1; 0-9 sets them (step 39)\n"
                "  L                  luminance texture GL_R16 / GL_R16F (step 40)\n"
                "  R                  reset every setting\n"
-               "  H                  hide or show the panel");
+               "  H                  hide or show the panel\n"
+               "  V / Shift+V        next / previous view of the chain (common/, as --view)");
 }
 // [/step 37]
 

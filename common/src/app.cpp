@@ -61,6 +61,7 @@ App::App(const Stage& stage, const Options& options, Context& context)
                   << "version:  " << glString(GL_VERSION) << "\n";
     }
     quad_ = std::make_unique<FullScreenQuad>();
+    views_ = std::make_unique<ViewService>(shaders_, *findView(options_.view));
     scene_ = std::make_unique<Scene>(shaders_, T10_ASSET_DIR);
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
@@ -81,8 +82,11 @@ App::App(const Stage& stage, const Options& options, Context& context)
         glfwSetScrollCallback(context_.window(), [](GLFWwindow* window, double, double dy) {
             static_cast<App*>(glfwGetWindowUserPointer(window))->camera_.zoom(static_cast<float>(dy));
         });
-        glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int) {
+        glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int mods) {
             if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
+            if (key == GLFW_KEY_V && action == GLFW_PRESS) {
+                static_cast<App*>(glfwGetWindowUserPointer(window))->views_->cycle((mods & GLFW_MOD_SHIFT) ? -1 : 1);
+            }
         });
         if (!options_.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
     }
@@ -203,6 +207,7 @@ int App::run() {
         }
         const auto start = Clock::now();
         stage_.render(*this);
+        views_->finishFrame(*quad_, width_, height_);
         if (!window) glFinish();
         const double renderMs = secondsSince(start) * 1000.0;
         frameTimeMs_ = window ? elapsed * 1000.0 : renderMs;
@@ -218,8 +223,8 @@ int App::run() {
         if (window && secondsSince(titleTime) > kTitleInterval) {
             titleTime = Clock::now();
             char title[160];
-            std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps)", stage_.name, frameTimeMs_,
-                          frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0);
+            std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps) - view %s (V)", stage_.name, frameTimeMs_,
+                          frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0, viewName(views_->current()));
             context_.setTitle(title);
         }
         context_.swapBuffers();

@@ -4,6 +4,7 @@
 
 #include "t10/camera.hpp"
 #include "t10/error.hpp"
+#include "t10/views.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -80,6 +81,7 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
                                               "15-17 as PFM files into DIR (for numeric checks)");
     app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
                                                         "minimised window; for tests)");
+    app.add_option("--view", options.view, "What to show: " + allViewNames() + " (default final; V cycles in a window)");
     app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
     if (addOptions) addOptions(app);
 
@@ -104,6 +106,9 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         }
         if (!findCameraPreset(options.camera)) {
             throw UsageError("--camera " + options.camera + ": unknown preset (choose from " + presetList() + ")");
+        }
+        if (!findView(options.view)) {
+            throw UsageError("--view " + options.view + ": unknown view (choose from " + allViewNames() + ")");
         }
         if (!resizeSequence.empty()) {
             std::stringstream list(resizeSequence);

@@ -10,6 +10,7 @@
 #include "t10/quad.hpp"
 #include "t10/scene.hpp"
 #include "t10/shader.hpp"
+#include "t10/views.hpp"
 
 #include <memory>
 
@@ -44,6 +45,8 @@ public:
     Context& context() { return context_; }
     // Milliseconds the last frame took (render + glFinish headless; swap to swap in a window).
     double frameTimeMs() const { return frameTimeMs_; }
+    // The view selector (--view, the V key, the extras panel's list).
+    ViewService& views() { return *views_; }
 
     // Renders until the frame count is reached or the window closes; returns the exit code.
     int run();
@@ -68,6 +71,7 @@ private:
     double lastCursorX_ = 0.0;
     double lastCursorY_ = 0.0;
     std::unique_ptr<GlErrorLog> glErrors_;
+    std::unique_ptr<ViewService> views_;
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).

@@ -28,6 +28,7 @@ struct Options {
     std::string input;              // --input FILE.exr, replaces the scene by an HDR image
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
+    std::string view = "final";     // --view NAME, checked against t10::findView
     bool verbose = false;
 };
 
