@@ -243,7 +243,7 @@ EvClass classifyEv(double y, double key, double ywhite) {
 Rgb evColour(const EvClass& ev) {
     if (ev.kind == EvKind::Burnt) return {1.0, 1.0, 1.0};
     if (ev.kind == EvKind::Black) return {0.0, 0.0, 0.0};
-    Rgb colour = colourScale(static_cast<double>(ev.stop - kEvLowest) / (kEvHighest - kEvLowest));
+    Rgb colour = colourScale(static_cast<double>(ev.stop - kEvLowest) / (kEvHighest - kEvLowest) * kEvScaleTop);
     if (ev.kind == EvKind::Compressed) {
         for (double& c : colour) c *= 0.5;
     }

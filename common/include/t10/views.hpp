@@ -55,11 +55,12 @@ double keyFromMapped(double mapped, double ywhite = kYwhite);
 double middleGrey(double key);
 
 // The ev view: each pixel's HDR luminance in whole stops around the key Ya, one colour-scale band
-// per stop from kEvLowest to kEvHighest (clamped), drawn full where the tone map lifts the pixel
+// per stop from kEvLowest (dark blue) to kEvHighest (red), clamped, drawn full where the tone map lifts the pixel
 // (its displayed luminance is above its scene luminance) and at half intensity where it compresses
 // it; pixels the operator burns to white (Yr >= Yw) are white, pixels that end as 8-bit black are black.
 constexpr int kEvLowest = -6;
 constexpr int kEvHighest = 5;
+constexpr double kEvScaleTop = 5.0 / 6.0; // the bands end at red on the scale, so white only means burnt
 enum class EvKind { Black, Burnt, Lifted, Compressed };
 struct EvClass {
     EvKind kind;

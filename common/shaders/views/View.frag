@@ -27,6 +27,7 @@ out vec3 v3ColourOut;
 const int kHdr = 1, kLuminance = 2, kKey = 3, kBloom0 = 4, kBloom1 = 5, kBlur = 6, kEv = 7, kNan = 8;
 const int kEvLowest = -6;
 const int kEvHighest = 5;
+const float kEvScaleTop = 5.0 / 6.0; // the bands stop at red: white means burnt
 const float kEpsilon = 1e-8;
 const vec3 v3LuminanceConvert = vec3(0.2126, 0.7152, 0.0722);
 
@@ -63,7 +64,7 @@ vec3 evColour(float fY)
     float fDisplayed = fYr * (1.0 + fYr / (fYwhite * fYwhite)) / (1.0 + fYr);
     if (!(fDisplayed >= 0.5 / 255.0)) return vec3(0.0);
     int iStop = clamp(int(floor(log2(fY / fKey))), kEvLowest, kEvHighest);
-    vec3 v3Band = colourScale(float(iStop - kEvLowest) / float(kEvHighest - kEvLowest));
+    vec3 v3Band = colourScale(float(iStop - kEvLowest) / float(kEvHighest - kEvLowest) * kEvScaleTop);
     return fDisplayed > fY ? v3Band : 0.5 * v3Band;
 }
 
@@ -74,7 +75,7 @@ vec3 evLegend(ivec2 i2Pixel)
     int iSegment = i2Pixel.x * iSegments / i2Size.x;
     if (iSegment == 0) return vec3(0.0);
     if (iSegment == iSegments - 1) return vec3(1.0);
-    vec3 v3Band = colourScale(float(iSegment - 1) / float(kEvHighest - kEvLowest));
+    vec3 v3Band = colourScale(float(iSegment - 1) / float(kEvHighest - kEvLowest) * kEvScaleTop);
     return i2Pixel.y * 2 >= iLegend ? v3Band : 0.5 * v3Band;
 }
 
