@@ -36,6 +36,11 @@ foreach(stage IN LISTS T10_STAGES)
         endif()
     endforeach()
 endforeach()
+# The thumbnail strip over the final frame (the window's T key; --thumbnails headless).
+add_test(NAME "view: tutorial10_part3_gaussian thumbnails"
+         COMMAND ${BIN}/tutorial10_part3_gaussian ${VIEW_ARGS} --size 640x360 --thumbnails
+                 --output ${VIEWS}/tutorial10_part3_gaussian/thumbnails/frame.png --dump ${VIEWS}/tutorial10_part3_gaussian/thumbnails)
+set_tests_properties("view: tutorial10_part3_gaussian thumbnails" PROPERTIES FIXTURES_SETUP views)
 add_test(NAME "view: an unknown view name is bad usage"
          COMMAND ${EXPECT} 2 "--view glow: unknown view \\(choose from final, hdr, luminance" --
                  ${BIN}/tutorial10_part0_start ${VIEW_ARGS} --view glow)
@@ -119,12 +124,30 @@ add_test(NAME "views reject: nan_unmarked"
                  "nan view counts and marks the non-finite texels (part1 NaN input)")
 set_tests_properties("views reject: nan_unmarked" PROPERTIES FIXTURES_REQUIRED "view_mutants;inputs")
 
+# The thumbnails' check: a View.frag that samples each thumbnail with the framebuffer's size instead
+# of the slot's must fail it.
+file(READ ${PROJECT_SOURCE_DIR}/common/shaders/views/View.frag source)
+string(REPLACE "(ivec2(gl_FragCoord.xy) - i2Origin) * i2TexSize / i2Size" "ivec2(gl_FragCoord.xy) - i2Origin" mutated "${source}")
+if(mutated STREQUAL source)
+    message(FATAL_ERROR "view mutant thumbnail_unscaled: the texel line is not in View.frag")
+endif()
+set(root ${VIEWS}/mutants/thumbnail_unscaled)
+file(WRITE ${root}/shaders/views/View.frag "${mutated}")
+add_test(NAME "view: mutant thumbnail_unscaled"
+         COMMAND ${BIN}/tutorial10_part3_gaussian ${VIEW_ARGS} --size 640x360 --thumbnails --shader-dir ${root}/shaders
+                 --output ${root}/tutorial10_part3_gaussian/thumbnails/frame.png --dump ${root}/tutorial10_part3_gaussian/thumbnails)
+set_tests_properties("view: mutant thumbnail_unscaled" PROPERTIES FIXTURES_SETUP view_mutants)
+add_test(NAME "views reject: thumbnail_unscaled"
+         COMMAND ${EXPECT} nonzero "CHECK\\( worst <= 1 \\)" -- ${CMAKE_COMMAND} -E env T10_DUMP_DIR=${root}
+                 ${BIN}/t10_views_tests "thumbnails show the accumulation and a label under the frame (part3)")
+set_tests_properties("views reject: thumbnail_unscaled" PROPERTIES FIXTURES_REQUIRED view_mutants)
+
 # The window path: the view is drawn after the stage's frame (and, in extras, under the panel).
 if(XVFB_RUN)
     foreach(stage tutorial10_part3_gaussian extras)
         add_test(NAME "view: ${stage} ev in a window"
                  COMMAND ${XVFB_RUN} -a -s "-screen 0 1280x1024x24" ${EXPECT} 0 "^view ev: " --
-                         ${BIN}/${stage} --backend window --size 320x180 --frames 3 --view ev
+                         ${BIN}/${stage} --backend window --size 640x360 --frames 3 --view ev --thumbnails
                          --output ${VIEWS}/window/${stage}_ev.png)
     endforeach()
 endif()

@@ -62,6 +62,7 @@ App::App(const Stage& stage, const Options& options, Context& context)
     }
     quad_ = std::make_unique<FullScreenQuad>();
     views_ = std::make_unique<ViewService>(shaders_, *findView(options_.view));
+    views_->showThumbnails(options_.thumbnails);
     scene_ = std::make_unique<Scene>(shaders_, T10_ASSET_DIR);
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
@@ -84,9 +85,9 @@ App::App(const Stage& stage, const Options& options, Context& context)
         });
         glfwSetKeyCallback(context_.window(), [](GLFWwindow* window, int key, int, int action, int mods) {
             if (key == GLFW_KEY_ESCAPE && action == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
-            if (key == GLFW_KEY_V && action == GLFW_PRESS) {
-                static_cast<App*>(glfwGetWindowUserPointer(window))->views_->cycle((mods & GLFW_MOD_SHIFT) ? -1 : 1);
-            }
+            ViewService& views = *static_cast<App*>(glfwGetWindowUserPointer(window))->views_;
+            if (key == GLFW_KEY_V && action == GLFW_PRESS) views.cycle((mods & GLFW_MOD_SHIFT) ? -1 : 1);
+            if (key == GLFW_KEY_T && action == GLFW_PRESS) views.showThumbnails(!views.thumbnails());
         });
         if (!options_.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
     }

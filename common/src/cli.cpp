@@ -82,6 +82,8 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
     app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
                                                         "minimised window; for tests)");
     app.add_option("--view", options.view, "What to show: " + allViewNames() + " (default final; V cycles in a window)");
+    app.add_flag("--thumbnails", options.thumbnails, "Draw a strip of thumbnails of every target of the chain "
+                                                      "along the bottom, each labelled (T toggles in a window)");
     app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
     if (addOptions) addOptions(app);
 

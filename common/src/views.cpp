@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 namespace t10 {
@@ -46,8 +47,22 @@ enum Location : GLint {
     kMapped = 7,
     kLegend = 8,
     kPresent = 9,
-    kScale = 10 // kScaleStops vec3s
+    kScale = 10, // kScaleStops vec3s
+    kOrigin = 17,
+    kTextScale = 18,
+    kText = 19 // kLabelChars ints
 };
+
+// Thumbnail labels: glyph indices into View.frag's 3x5 font, which holds exactly these characters.
+constexpr const char* kGlyphChars = "0123456789xRGBAF_ ";
+constexpr int kGlyphRows = 5;
+constexpr int kLabelScale = 2;
+constexpr int kLabelChars = 24;
+
+GLint glyphIndex(char c) {
+    const char* found = std::strchr(kGlyphChars, c);
+    return found != nullptr && c != '\0' ? static_cast<GLint>(found - kGlyphChars) : -1;
+}
 
 ViewTarget levelOf(GLenum unit, GLuint texture, int level) {
     ViewTarget target;
@@ -363,9 +378,46 @@ void ViewService::finishFrame(const FullScreenQuad& quad, int width, int height)
     drawnThisFrame_ = false;
 }
 
+void ViewService::updateCaption() {
+    const double dg = key_ > 0.0 ? views::middleGrey(key_) : 0.0;
+    switch (current_) {
+    case View::Final: caption_ = "final: the stage's own frame"; break;
+    case View::Hdr:
+        caption_ = "hdr: accumulation (" + describe(accumulation_) + ") x " + number(views::kHdrExposure) +
+                   ", clamped, ^(1/2.2); white = at or above the bloom threshold " + number(views::kBloomThreshold);
+        break;
+    case View::Luminance:
+        caption_ = "luminance: " + describe(luminance_) +
+                   (luminanceMapped_ ? ", range-mapped log luminance" : ", log luminance range-mapped for display") +
+                   " on the colour scale (strip at the bottom): 0 = log(1e-8) dark blue ... 1 = log(Yw = " +
+                   number(ywhite_) + ") white";
+        break;
+    case View::Key:
+        caption_ = "key: smallest level (" + describe(luminanceSmallest_) + ") as a swatch on the colour scale at " +
+                   number(views::rangeMap(key_, ywhite_)) + ": Ya = " + number(key_) + ", dg = " + number(dg);
+        break;
+    case View::Bloom0:
+    case View::Bloom1:
+    case View::Blur: {
+        const ViewTarget& target = current_ == View::Bloom0 ? bloom0_ : current_ == View::Bloom1 ? bloom1_ : blur_;
+        caption_ = std::string(viewName(current_)) + ": " + describe(target) + " x " + number(views::kBloomExposure) +
+                   ", clamped, ^(1/2.2)";
+        break;
+    }
+    case View::Ev:
+        caption_ = "ev: HDR luminance in stops around Ya = " + number(key_) + " (dg = " + number(dg) + "), bands " +
+                   std::to_string(views::kEvLowest) + " (dark blue) to +" + std::to_string(views::kEvHighest) +
+                   " (red) on the colour scale, full where the tone map lifts a pixel, half where it compresses it; "
+                   "white: burnt (Y >= Yw Ya / dg = " +
+                   number(ywhite_ * key_ / dg) + "), black: 8-bit black; legend strip at the bottom";
+        break;
+    case View::Nan: countNonFinite(); break;
+    }
+}
+
 void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
     drawnThisFrame_ = true;
-    if (current_ == View::Final && commandLineChecked_) {
+    if (current_ == View::Final && commandLineChecked_ && !thumbnails_) {
         caption_ = "final: the stage's own frame";
         return;
     }
@@ -380,53 +432,14 @@ void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
         }
     }
     if (!available(current_)) current_ = View::Final; // e.g. exercise 40 rebuilt the chain
-    if (current_ == View::Final) {
-        caption_ = "final: the stage's own frame";
-        return;
-    }
-
-    if (program_ == 0) program_ = shaders_.createProgram({"FullScreenQuad.vert", "views/View.frag"});
-    if (luminanceSmallest_.texture != 0) readKey();
-    const double dg = key_ > 0.0 ? views::middleGrey(key_) : 0.0;
-    const double keyPosition = views::rangeMap(key_, ywhite_);
-
-    switch (current_) {
-    case View::Hdr:
-        caption_ = "hdr: accumulation (" + describe(accumulation_) + ") x " + number(views::kHdrExposure) +
-                   ", clamped, ^(1/2.2); white = at or above the bloom threshold " + number(views::kBloomThreshold);
-        break;
-    case View::Luminance:
-        caption_ = "luminance: " + describe(luminance_) +
-                   (luminanceMapped_ ? ", range-mapped log luminance" : ", log luminance range-mapped for display") +
-                   " on the colour scale (strip at the bottom): 0 = log(1e-8) dark blue ... 1 = log(Yw = " +
-                   number(ywhite_) + ") white";
-        break;
-    case View::Key:
-        caption_ = "key: smallest level (" + describe(luminanceSmallest_) + ") as a swatch on the colour scale at " +
-                   number(keyPosition) + ": Ya = " + number(key_) + ", dg = " + number(dg);
-        break;
-    case View::Bloom0:
-    case View::Bloom1:
-    case View::Blur: {
-        const ViewTarget& target = current_ == View::Bloom0 ? bloom0_ : current_ == View::Bloom1 ? bloom1_ : blur_;
-        caption_ = std::string(viewName(current_)) + ": " + describe(target) + " x " + number(views::kBloomExposure) +
-                   ", clamped, ^(1/2.2)";
-        break;
-    }
-    case View::Ev:
-        caption_ = "ev: HDR luminance in stops around Ya = " + number(key_) + " (dg = " + number(dg) + "), bands " +
-                   std::to_string(views::kEvLowest) + " to +" + std::to_string(views::kEvHighest) +
-                   " on the colour scale, full where the tone map lifts a pixel, half where it compresses it; "
-                   "white: burnt (Y >= Yw Ya / dg = " +
-                   number(ywhite_ * key_ / dg) + "), black: 8-bit black; legend strip at the bottom";
-        break;
-    case View::Nan: countNonFinite(); break;
-    case View::Final: break;
-    }
-    if (caption_ != printedCaption_) {
+    if (current_ == View::Key || current_ == View::Ev) readKey();
+    updateCaption();
+    if (current_ != View::Final && caption_ != printedCaption_) {
         std::cout << "view " << caption_ << "\n";
         printedCaption_ = caption_;
     }
+    if (current_ == View::Final && !thumbnails_) return;
+    if (program_ == 0) program_ = shaders_.createProgram({"FullScreenQuad.vert", "views/View.frag"});
 
     GLint active = 0;
     GLint previousProgram = 0;
@@ -446,26 +459,23 @@ void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
         if (targets[i]->texture != 0) present |= 1 << i;
     }
 
+    const double dg = key_ > 0.0 ? views::middleGrey(key_) : 0.0;
     glUseProgram(program_);
-    glUniform1i(kMode, static_cast<GLint>(current_));
-    glUniform2i(kSize, width, height);
-    const bool bloomView = current_ == View::Bloom0 || current_ == View::Bloom1 || current_ == View::Blur;
-    glUniform1f(kExposure, static_cast<float>(bloomView ? views::kBloomExposure : views::kHdrExposure));
-    glUniform1f(kKeyPosition, static_cast<float>(keyPosition));
+    glUniform1f(kKeyPosition, static_cast<float>(views::rangeMap(key_, ywhite_)));
     glUniform1f(kKey, static_cast<float>(key_));
     glUniform1f(kDg, static_cast<float>(dg));
     glUniform1f(kYwhite, static_cast<float>(ywhite_));
     glUniform1i(kMapped, luminanceMapped_ ? 1 : 0);
-    glUniform1i(kLegend, views::legendHeight(height));
     glUniform1i(kPresent, present);
     for (int i = 0; i < views::kScaleStops; ++i) {
         const views::Rgb& stop = views::colourScaleStops()[static_cast<std::size_t>(i)];
         glUniform3f(kScale + i, static_cast<float>(stop[0]), static_cast<float>(stop[1]), static_cast<float>(stop[2]));
     }
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    glViewport(0, 0, width, height);
     quad.bind();
-    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, nullptr);
+    if (current_ != View::Final) drawPass(current_, 0, 0, width, height, views::legendHeight(height));
+    if (thumbnails_) drawThumbnails(width, height);
+    glViewport(0, 0, width, height);
 
     for (int i = 0; i < kSampledTargets; ++i) {
         glActiveTexture(GL_TEXTURE0 + kFirstViewUnit + static_cast<GLuint>(i));
@@ -476,6 +486,43 @@ void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
     glActiveTexture(static_cast<GLenum>(active));
     if (depthTest == GL_TRUE) glEnable(GL_DEPTH_TEST);
     if (blend == GL_TRUE) glEnable(GL_BLEND);
+}
+
+void ViewService::drawPass(View view, int x, int y, int width, int height, int legend) const {
+    const bool bloomView = view == View::Bloom0 || view == View::Bloom1 || view == View::Blur;
+    glViewport(x, y, width, height);
+    glUniform1i(kMode, static_cast<GLint>(view));
+    glUniform2i(kOrigin, x, y);
+    glUniform2i(kSize, width, height);
+    glUniform1f(kExposure, static_cast<float>(bloomView ? views::kBloomExposure : views::kHdrExposure));
+    glUniform1i(kLegend, legend);
+    glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, nullptr);
+}
+
+void ViewService::drawThumbnails(int width, int height) const {
+    // Five slots along the bottom, each a fifth of the width with the frame's aspect, and a label
+    // band above each: the target's format and size in the built-in 3x5 font at twice its size.
+    const int slotWidth = width / kSampledTargets;
+    const int slotHeight = std::max(1, slotWidth * height / std::max(width, 1));
+    const int labelHeight = kGlyphRows * kLabelScale + 2 * kLabelScale;
+    if (slotWidth < 8 || slotHeight + labelHeight > height) return;
+    const std::array<std::pair<View, const ViewTarget*>, kSampledTargets> slots = {
+        {{View::Hdr, &accumulation_}, {View::Luminance, &luminance_}, {View::Bloom0, &bloom0_},
+         {View::Bloom1, &bloom1_}, {View::Blur, &blur_}}};
+    int slot = 0;
+    for (const auto& [view, target] : slots) {
+        if (target->texture == 0) continue;
+        const int x = slot * slotWidth;
+        drawPass(view, x, 0, slotWidth, slotHeight, 0);
+        std::array<GLint, kLabelChars> codes{};
+        const std::string label = formatName(target->format).substr(3) + " " + std::to_string(target->width) + "x" +
+                                  std::to_string(target->height);
+        for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = i < label.size() ? glyphIndex(label[i]) : -1;
+        glUniform1iv(kText, kLabelChars, codes.data());
+        glUniform1i(kTextScale, kLabelScale);
+        drawPass(View::Final, x, slotHeight, slotWidth, labelHeight, 0); // mode 0 draws the label
+        ++slot;
+    }
 }
 
 } // namespace t10

@@ -229,8 +229,41 @@ void checkNan(const std::string& name, bool fullResOnly) {
     else CHECK( marked >= expectedMarked );
 }
 
+void checkThumbnails(const std::string& stage) {
+    const t10::test::Dump dump = t10::test::loadDump(stage + "/thumbnails");
+    const Image8& image = dump.frame;
+    const ImageF& hdr = dump.accumulation;
+    // The first of five slots is the hdr view of the accumulation at a fifth of the width.
+    const int slotWidth = image.width / 5;
+    const int slotHeight = slotWidth * image.height / image.width;
+    int worst = 0;
+    for (int y = 0; y < slotHeight; ++y) {
+        for (int x = 0; x < slotWidth; ++x) {
+            const int tx = texelOf(x, hdr.width, slotWidth);
+            const int ty = texelOf(y, hdr.height, slotHeight);
+            views::Rgb colour{};
+            for (int c = 0; c < 3; ++c) colour[c] = views::displayEncode(hdr.at(tx, ty, c), views::kHdrExposure);
+            worst = std::max(worst, byteDistance(image, x, y, toBytes(colour)));
+        }
+    }
+    // One 8-bit step, as for the full-size views.
+    CHECK( worst <= 1 );
+    // The label band above the slot holds white glyph pixels on a dark ground.
+    long white = 0;
+    long dark = 0;
+    for (int y = slotHeight; y < slotHeight + 14; ++y) {
+        for (int x = 0; x < slotWidth; ++x) {
+            white += image.at(x, y, 0) == 255 ? 1 : 0;
+            dark += image.at(x, y, 0) < 40 ? 1 : 0;
+        }
+    }
+    CHECK( white > 20 );
+    CHECK( dark > white );
+}
+
 } // namespace
 
+TEST_CASE("thumbnails show the accumulation and a label under the frame (part3)") { checkThumbnails(kPart3); }
 TEST_CASE("luminance view decodes to the CPU log luminance (part1)") { checkLuminance(kPart1); }
 TEST_CASE("luminance view decodes to the CPU log luminance (part3)") { checkLuminance(kPart3); }
 TEST_CASE("key view is a flat swatch of the smallest luminance level (part1)") { checkKey(kPart1); }

@@ -29,6 +29,7 @@ struct Options {
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
     std::string view = "final";     // --view NAME, checked against t10::findView
+    bool thumbnails = false;        // --thumbnails: the strip of every target under the frame
     bool verbose = false;
 };
 

@@ -111,6 +111,9 @@ public:
     bool select(View view);
     // Moves to the next (+1) or previous (-1) view the stage has.
     void cycle(int direction);
+    // The strip of thumbnails of every target along the bottom (window: T; --thumbnails).
+    void showThumbnails(bool show) { thumbnails_ = show; }
+    bool thumbnails() const { return thumbnails_; }
     // One line about what is shown: the view, its encoding, and its numbers (Ya, dg, counts).
     const std::string& caption() const { return caption_; }
 
@@ -118,12 +121,16 @@ private:
     void discover(int width, int height);
     void readKey();
     void countNonFinite();
+    void updateCaption();
+    void drawPass(View view, int x, int y, int width, int height, int legend) const;
+    void drawThumbnails(int width, int height) const;
 
     const ShaderManager& shaders_;
     View current_;
     bool commandLineChecked_ = false;
     bool discovered_ = false;
     bool drawnThisFrame_ = false;
+    bool thumbnails_ = false;
     GLuint program_ = 0;
     ViewTarget accumulation_;
     ViewTarget luminance_;

@@ -21,6 +21,9 @@ layout(location = 7) uniform int iMapped; // 1: the luminance texture holds rang
 layout(location = 8) uniform int iLegend; // legend strip height in pixels
 layout(location = 9) uniform int iPresent; // bit i: target i is bound (accumulation, luminance, bloom0, bloom1, blur)
 layout(location = 10) uniform vec3 v3Scale[7];
+layout(location = 17) uniform ivec2 i2Origin; // the pass's viewport corner (thumbnails)
+layout(location = 18) uniform int iTextScale;
+layout(location = 19) uniform int iText[24]; // label glyphs (index into kFont, -1: none)
 
 out vec3 v3ColourOut;
 
@@ -31,10 +34,15 @@ const float kEvScaleTop = 5.0 / 6.0; // the bands stop at red: white means burnt
 const float kEpsilon = 1e-8;
 const vec3 v3LuminanceConvert = vec3(0.2126, 0.7152, 0.0722);
 
+// A 3x5 font for the thumbnail labels, "0123456789xRGBAF_ " (t10::views kGlyphChars): 15 bits per
+// glyph, the top row in the highest three.
+const int kFont[18] = int[18](0x7B6F, 0x2C97, 0x73E7, 0x73CF, 0x5BC9, 0x79CF, 0x79EF, 0x7249, 0x7BEF, 0x7BCF,
+                              0x0AA8, 0x6BAD, 0x796F, 0x6BAE, 0x2BED, 0x79A4, 0x0007, 0x0000);
+
 vec4 fetch(sampler2D s)
 {
     ivec2 i2TexSize = textureSize(s, 0);
-    ivec2 i2Texel = ivec2(gl_FragCoord.xy) * i2TexSize / i2Size;
+    ivec2 i2Texel = (ivec2(gl_FragCoord.xy) - i2Origin) * i2TexSize / i2Size;
     return texelFetch(s, min(i2Texel, i2TexSize - 1), 0);
 }
 
@@ -79,8 +87,21 @@ vec3 evLegend(ivec2 i2Pixel)
     return i2Pixel.y * 2 >= iLegend ? v3Band : 0.5 * v3Band;
 }
 
+// A label on a dark band: glyph cells 4 x 6 font pixels, one font pixel of margin.
+vec3 label(ivec2 i2Pixel)
+{
+    ivec2 i2Font = i2Pixel / iTextScale - ivec2(1);
+    int iChar = i2Font.x / 4;
+    int iColumn = i2Font.x - iChar * 4;
+    int iRow = 4 - i2Font.y; // from the top
+    if (i2Font.x < 0 || iChar >= 24 || iColumn > 2 || iRow < 0 || iRow > 4) return vec3(0.1);
+    int iGlyph = iText[iChar];
+    if (iGlyph < 0) return vec3(0.1);
+    return ((kFont[iGlyph] >> (14 - (iRow * 3 + iColumn))) & 1) != 0 ? vec3(1.0) : vec3(0.1);
+}
+
 void main() {
-    ivec2 i2Pixel = ivec2(gl_FragCoord.xy);
+    ivec2 i2Pixel = ivec2(gl_FragCoord.xy) - i2Origin;
     bool bLegend = i2Pixel.y < iLegend;
     if (iMode == kHdr) {
         v3ColourOut = display(fetch(s2Accumulation).rgb);
@@ -107,6 +128,6 @@ void main() {
         if ((iPresent & 16) != 0) bBad = bBad || nonFinite(fetch(s2Blur));
         v3ColourOut = bBad ? vec3(1.0, 0.0, 1.0) : 0.5 * display(v4Colour.rgb);
     } else {
-        v3ColourOut = vec3(0.0);
+        v3ColourOut = label(i2Pixel);
     }
 }
