@@ -22,6 +22,7 @@ help:
 	@echo "make run    open the final stage in a window, or render every stage headless into $(OUT)/"
 	@echo "make test   build and run every test (ctest)"
 	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
+	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
 	@echo "make clean  remove $(BUILD)/ and $(OUT)/"
 
 deps:
@@ -76,3 +77,19 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# Every view of every stage (--view), one frame each, into $(OUT)/views/<stage>/<view>.png; the views
+# a stage lacks are skipped (the program refuses them with exit code 2).
+VIEW_NAMES := final hdr luminance key bloom0 bloom1 blur ev nan
+.PHONY: views
+views: build
+	@for stage in $(STAGES); do \
+	    mkdir -p $(OUT)/views/$$stage; \
+	    for view in $(VIEW_NAMES); do \
+	        $(BIN)/$$stage --headless --frames 1 --size $(or $(VIEW_SIZE),640x360) --view $$view \
+	            --output $(OUT)/views/$$stage/$$view.png >/dev/null 2>$(OUT)/views/error.txt; \
+	        code=$$?; \
+	        if [ $$code -eq 0 ]; then echo "  $(OUT)/views/$$stage/$$view.png"; \
+	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
+	    done; \
+	done; rm -f $(OUT)/views/error.txt
