@@ -3,10 +3,12 @@
 // framebuffer 0 with common/shaders/views/View.frag.
 #include "t10/views.hpp"
 
-#include "t10/app.hpp"
 #include "t10/error.hpp"
 #include "t10/quad.hpp"
+#include "t10/readback.hpp"
 #include "t10/shader.hpp"
+
+#include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,9 +25,9 @@ constexpr std::array<const char*, kViewCount> kNames = {"final",  "hdr",  "lumin
 
 // The units the stage's chain uses (the fixed interface) and the ones the view pass samples from:
 // texture views of single levels, on units no stage touches.
-constexpr GLenum kAccumulationUnit = 15;
-constexpr GLenum kLuminanceUnit = 16;
-constexpr GLenum kBloomUnit = 17;
+constexpr GLenum kAccumulationUnit = contract::kAccumulationUnit;
+constexpr GLenum kLuminanceUnit = contract::kLuminanceKeyUnit;
+constexpr GLenum kBloomUnit = contract::kBloomUnit;
 constexpr GLuint kFirstViewUnit = 18; // accumulation, luminance, bloom0, bloom1, blur
 constexpr int kSampledTargets = 5;
 constexpr GLuint kQueryUnit = kFirstViewUnit + kSampledTargets; // where a found texture is inspected
@@ -373,11 +375,6 @@ void ViewService::countNonFinite() {
     caption_ += ")";
 }
 
-void ViewService::finishFrame(const FullScreenQuad& quad, int width, int height) {
-    if (!drawnThisFrame_) draw(quad, width, height);
-    drawnThisFrame_ = false;
-}
-
 void ViewService::updateCaption() {
     const double dg = key_ > 0.0 ? views::middleGrey(key_) : 0.0;
     switch (current_) {
@@ -416,7 +413,6 @@ void ViewService::updateCaption() {
 }
 
 void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
-    drawnThisFrame_ = true;
     if (current_ == View::Final && commandLineChecked_ && !thumbnails_) {
         caption_ = "final: the stage's own frame";
         return;
@@ -523,6 +519,13 @@ void ViewService::drawThumbnails(int width, int height) const {
         drawPass(View::Final, x, slotHeight, slotWidth, labelHeight, 0); // mode 0 draws the label
         ++slot;
     }
+}
+
+void ViewKeys::update(ViewService& views) {
+    const bool shift = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                       glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    if (edges_.pressed(window_, GLFW_KEY_V)) views.cycle(shift ? -1 : 1);
+    if (edges_.pressed(window_, GLFW_KEY_T)) views.showThumbnails(!views.thumbnails());
 }
 
 } // namespace t10

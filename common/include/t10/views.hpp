@@ -4,12 +4,16 @@
 // through, so stage code stays as the tutorial writes it. The encodings that turn a buffer into
 // display colours live here too, so the tests decode the images with the same functions.
 #pragma once
+#include "t10/contract.hpp"
 #include "t10/gl.hpp"
+#include "t10/keys.hpp"
 
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
+
+struct GLFWwindow;
 
 namespace t10 {
 
@@ -27,10 +31,9 @@ std::string allViewNames();
 
 namespace views {
 
-// The tutorial's constants the views decode with (the stage shaders hold them as literals).
-constexpr double kEpsilon = 1e-8;
-constexpr double kYwhite = 0.22;
-constexpr double kBloomThreshold = 2.95 * kYwhite;
+constexpr double kEpsilon = contract::kEpsilon;
+constexpr double kYwhite = contract::kWhitePoint;
+constexpr double kBloomThreshold = contract::kBloomThresholdFactor * contract::kWhitePoint;
 
 // hdr, bloom0, bloom1, blur: linear colour x exposure, clamped, then a 1/2.2 power so that dark
 // interiors stay visible. The hdr exposure puts the bloom threshold at display white (white in the
@@ -95,13 +98,10 @@ public:
     ViewService(const ViewService&) = delete;
     ViewService& operator=(const ViewService&) = delete;
 
-    // Draws the selected view over framebuffer 0 (nothing for `final`). Call after the stage's
-    // post-process, with the full-screen quad. Throws t10::UsageError when the stage lacks the view
-    // selected on the command line, listing the views it has.
+    // Draws the selected view (nothing for `final`) and the thumbnails over framebuffer 0. The
+    // frame loop calls it after the stage's frame and before the UI. Throws t10::UsageError when the
+    // stage lacks the view selected on the command line, listing the views it has.
     void draw(const FullScreenQuad& quad, int width, int height);
-    // The frame loop's hook: draws unless the stage already called draw() this frame (extras does,
-    // so that its panel stays on top), then starts the next frame.
-    void finishFrame(const FullScreenQuad& quad, int width, int height);
 
     View current() const { return current_; }
     // Views this stage has, as found in the last frame (before any frame: every view).
@@ -129,7 +129,6 @@ private:
     View current_;
     bool commandLineChecked_ = false;
     bool discovered_ = false;
-    bool drawnThisFrame_ = false;
     bool thumbnails_ = false;
     GLuint program_ = 0;
     ViewTarget accumulation_;
@@ -143,6 +142,17 @@ private:
     double key_ = 0.0;
     std::string caption_;
     std::string printedCaption_;
+};
+
+// The window's keys for the views: V next, Shift+V previous, T thumbnails on and off.
+class ViewKeys {
+public:
+    explicit ViewKeys(GLFWwindow* window) : window_(window) {}
+    void update(ViewService& views);
+
+private:
+    GLFWwindow* window_;
+    KeyEdges edges_;
 };
 
 } // namespace t10
