@@ -6,6 +6,7 @@
 #include "t10/error.hpp"
 #include "t10/quad.hpp"
 #include "t10/readback.hpp"
+#include "t10/scene_key.hpp"
 #include "t10/shader.hpp"
 
 #include <GLFW/glfw3.h>
@@ -352,11 +353,9 @@ void ViewService::discover(int width, int height) {
 }
 
 void ViewService::readKey() {
-    key_ = 0.0;
-    if (luminanceSmallest_.texture == 0) return;
-    const ImageF smallest = readTextureLevel(luminanceSmallest_.texture, luminanceSmallest_.level);
-    const double value = smallest.data.empty() ? 0.0 : smallest.data[0];
-    key_ = luminanceMapped_ ? views::keyFromMapped(value, ywhite_) : std::exp(value);
+    // extras' white point may differ from the tutorial's, which readSceneKey() assumes.
+    const std::optional<SceneKey> key = luminanceSmallest_.texture != 0 ? readSceneKey() : std::nullopt;
+    key_ = !key ? 0.0 : key->rangeMapped ? views::keyFromMapped(key->stored, ywhite_) : key->ya;
 }
 
 void ViewService::countNonFinite() {
