@@ -31,6 +31,7 @@ help:
 	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
+	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
 	@echo "make help   this list"
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
@@ -124,3 +125,19 @@ bench-gltf: deps
 	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
 	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
 	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
+
+# Every view of every stage (--view), one frame each, into $(OUT)/views/<stage>/<view>.png; the views
+# a stage lacks are skipped (the program refuses them with exit code 2).
+VIEW_NAMES := final hdr luminance key bloom0 bloom1 blur ev nan
+.PHONY: views
+views: build
+	@for stage in $(STAGES); do \
+	    mkdir -p $(OUT)/views/$$stage; \
+	    for view in $(VIEW_NAMES); do \
+	        $(BIN)/$$stage --headless --frames 1 --size $(or $(VIEW_SIZE),640x360) --view $$view \
+	            --output $(OUT)/views/$$stage/$$view.png >/dev/null 2>$(OUT)/views/error.txt; \
+	        code=$$?; \
+	        if [ $$code -eq 0 ]; then echo "  $(OUT)/views/$$stage/$$view.png"; \
+	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
+	    done; \
+	done; rm -f $(OUT)/views/error.txt

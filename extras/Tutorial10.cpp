@@ -22,6 +22,7 @@
 #include "t10/contract.hpp"
 #include "t10/imgui_host.hpp"
 #include "t10/keys.hpp"
+#include "t10/views_panel.hpp"
 
 #include <CLI/CLI.hpp>
 #include <GLFW/glfw3.h>
@@ -451,6 +452,9 @@ void GL_RenderPanel(t10::App& app)
     }
     // [/step 40]
 
+    t10::ui::heading("Views (V, Shift+V; T: thumbnails)");
+    t10::ui::viewList(app.views());
+
     ImGui::Spacing();
     ImGui::TextDisabled("R resets every setting, H hides this panel");
     t10::ui::endPanel();
@@ -599,7 +603,8 @@ void GL_AddOptions(CLI::App& cli)
                "  PageUp / PageDown  blur passes +1 / -1; 0-9 sets them (step 39)\n"
                "  L                  luminance texture GL_R16 / GL_R16F (step 40)\n"
                "  R                  reset every setting\n"
-               "  H                  hide or show the panel");
+               "  H                  hide or show the panel\n"
+               "  V / Shift+V, T     next / previous view of the chain, thumbnails (common/, as --view)");
 }
 // [/step 37]
 
