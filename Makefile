@@ -9,7 +9,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build, the tests and the headless renders need.
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libimgui-dev xvfb xauth \
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev xvfb xauth \
             jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
@@ -27,9 +27,13 @@ help:
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
+	@echo "make fuzz-gltf  fuzz the glTF loader (clang, ASan, UBSan) for FUZZ_GLTF_SECONDS (default 60)"
+	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
+	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
 	@echo "make help   this list"
+	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
@@ -108,3 +112,53 @@ test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
 	cd build-asan && ctest --output-on-failure -j $(JOBS)
+
+# `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
+# and a key-once final pass, and the key three ways with its error, at 320x180 .. 3840x2160 in a
+# release build (build-release/). Prints the tables; writes CSV, report.txt and bench.png into
+# $(OUT)/bench/. BENCH_ARGS passes options (e.g. BENCH_ARGS="--sizes 640x360,1280x720 --repeats 3").
+.PHONY: bench
+bench: PACKAGES += gnuplot-nox
+bench: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target t10-bench
+	build-release/bin/t10-bench --out $(OUT)/bench $(BENCH_ARGS)
+	gnuplot -e "dir='$(OUT)/bench'" tools/bench/plot.gp
+	@echo "wrote $(OUT)/bench/bench.png"
+
+# The glTF loader's fuzzer (fuzz/gltf/): clang, ASan and UBSan into $(BUILD)/fuzz-gltf/, seeded with the
+# loader's test fixtures, run for FUZZ_GLTF_SECONDS (default 60; the loader was run for 1800 before it
+# was called done). Not part of `make test`.
+.PHONY: fuzz-gltf
+FUZZ_GLTF_SECONDS ?= 60
+fuzz-gltf: PACKAGES += clang libclang-rt-14-dev
+fuzz-gltf: build
+	@[ -f $(BUILD)/fuzz-gltf/build.ninja ] || CXX=clang++ cmake -S fuzz/gltf -B $(BUILD)/fuzz-gltf -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD)/fuzz-gltf -j $(JOBS)
+	$(BIN)/make_gltf_fixtures $(BUILD)/fuzz-gltf/fixtures >/dev/null
+	fuzz/gltf/run.sh $(BUILD)/fuzz-gltf $(BUILD)/fuzz-gltf/fixtures $(FUZZ_GLTF_SECONDS)
+
+# The glTF loader's speed: a generated scene of about one million triangles loaded by a release build
+# (tools/bench_gltf_load; not a test). The loader must stay under 2 s on the 2-core CI machine.
+.PHONY: bench-gltf
+bench-gltf: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
+	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
+	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
+
+# Every view of every stage (--view), one frame each, into $(OUT)/views/<stage>/<view>.png; the views
+# a stage lacks are skipped (the program refuses them with exit code 2).
+VIEW_NAMES := final hdr luminance key bloom0 bloom1 blur ev nan
+.PHONY: views
+views: build
+	@for stage in $(STAGES); do \
+	    mkdir -p $(OUT)/views/$$stage; \
+	    for view in $(VIEW_NAMES); do \
+	        $(BIN)/$$stage --headless --frames 1 --size $(or $(VIEW_SIZE),640x360) --view $$view \
+	            --output $(OUT)/views/$$stage/$$view.png >/dev/null 2>$(OUT)/views/error.txt; \
+	        code=$$?; \
+	        if [ $$code -eq 0 ]; then echo "  $(OUT)/views/$$stage/$$view.png"; \
+	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
+	    done; \
+	done; rm -f $(OUT)/views/error.txt

@@ -9,6 +9,7 @@
 #include "t10/gpu_timers.hpp"
 #include "t10/image_io.hpp"
 #include "t10/input_image.hpp"
+#include "t10/interactive.hpp"
 #include "t10/outputs.hpp"
 
 #include <GLFW/glfw3.h>
@@ -48,7 +49,7 @@ std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const Op
 
 App::App(const Stage& stage, const Options& options, Context& context)
     : stage_(stage), options_(options), context_(context), shaders_(shaderSearchPath(stage, options)),
-      camera_(*findCameraPreset(options.camera)), glErrors_(std::make_unique<GlErrorLog>()) {
+      glErrors_(std::make_unique<GlErrorLog>()) {
     glErrors_->installDebugCallback();
     if (options_.verbose) {
         std::cout << "backend:  " << context_.description() << "\n"
@@ -61,7 +62,9 @@ App::App(const Stage& stage, const Options& options, Context& context)
     ImageF image;
     if (!options_.input.empty()) image = loadInputImage(options_.input, options_.keepNonFinite, std::cerr);
     quad_ = std::make_unique<FullScreenQuad>();
-    scene_ = std::make_unique<Scene>(shaders_, T10_ASSET_DIR);
+    views_ = std::make_unique<ViewService>(shaders_, *findView(options_.view));
+    views_->showThumbnails(options_.thumbnails);
+    loadScene();
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
         if (options_.sizeGiven && (image.width != options_.width || image.height != options_.height)) {
@@ -76,12 +79,35 @@ App::App(const Stage& stage, const Options& options, Context& context)
         scene_->setInputImage(std::move(image));
     }
     if (context_.isWindow()) {
+        // Interactive speed without a GPU (t10/interactive.hpp); headless renders are unchanged.
+        if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         input_ = std::make_unique<CameraInput>(context_.window(), camera_);
+        viewKeys_ = std::make_unique<ViewKeys>(context_.window());
         if (!options_.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
         // After the camera's callbacks, so that the UI's chain to them.
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
     }
     if (stage_.timers != nullptr) stage_.timers->create();
+}
+
+void App::loadScene() {
+    const std::string file = options_.scene.empty() ? builtInScenePath() : options_.scene;
+    const auto start = Clock::now();
+    const SceneDescription description = loadGltfScene(file);
+    const double loadMs = secondsSince(start) * 1000.0;
+    for (const std::string& warning : description.warnings) std::cerr << "warning: " << file << ": " << warning << "\n";
+    const CameraPreset* preset =
+        options_.camera.empty() ? &description.cameras.front() : description.findCamera(options_.camera);
+    if (preset == nullptr)
+        throw UsageError("--camera " + options_.camera + ": unknown camera (" + file + " has " +
+                         description.cameraNames() + ")");
+    camera_ = Camera(*preset);
+    scene_ = std::make_unique<Scene>(shaders_, description);
+    if (options_.verbose) {
+        std::cout << "scene:    " << file << ": " << description.triangleCount << " triangles, "
+                  << description.materials.size() << " materials, " << description.lights.size()
+                  << (description.defaultLights ? " default" : "") << " lights, loaded in " << loadMs << " ms\n";
+    }
 }
 
 App::~App() {
@@ -165,6 +191,7 @@ int App::run() {
         const double elapsed = secondsSince(last);
         last = Clock::now();
         if (input_ != nullptr) input_->update(elapsed);
+        if (viewKeys_ != nullptr && (ui_ == nullptr || !ui_->wantsKeyboard())) viewKeys_->update(*views_);
         if (width_ == 0 || height_ == 0) {
             notWritten = "the last frame (" + std::to_string(frame) + ") was 0x0, like a minimised window";
             if (window) glfwWaitEventsTimeout(0.1);
@@ -173,6 +200,7 @@ int App::run() {
         const auto start = Clock::now();
         renderFrame();
         if (stage_.timers != nullptr) stage_.timers->collect(false);
+        views_->draw(*quad_, width_, height_);
         drawUi();
         if (!window) glFinish();
         const double renderMs = secondsSince(start) * 1000.0;
@@ -217,8 +245,8 @@ void App::followSize(int frame) {
 
 void App::showFrameTimeInTitle() {
     char title[160];
-    std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps)", stage_.name, frameTimeMs_,
-                  frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0);
+    std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps) - view %s (V)", stage_.name, frameTimeMs_,
+                  frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0, viewName(views_->current()));
     context_.setTitle(title);
 }
 

@@ -24,11 +24,14 @@ struct Options {
     int frames = 0;                 // 0: until the window closes (headless runs default to 1)
     std::string output;             // --output FILE.png
     std::string exr;                // --exr FILE.exr
-    std::string camera = "default"; // --camera NAME
+    std::string camera;             // --camera NAME (empty: the scene's first camera)
+    std::string scene;              // --scene FILE.gltf|.glb (empty: the built-in scene)
     std::string shaderDir;          // --shader-dir DIR, searched before the stage's own folder
     std::string input;              // --input FILE.exr, replaces the scene by an HDR image
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
+    std::string view = "final";     // --view NAME, checked against t10::findView
+    bool thumbnails = false;        // --thumbnails: the strip of every target under the frame
     bool verbose = false;
     int bench = 0;        // --bench N: timed frames before the ordinary ones (0: no benchmark)
     std::string benchCsv; // --bench-csv FILE

@@ -1,29 +1,25 @@
-// The scene as it stands before Tutorial 10: a room (floor, walls) and boxes with normal mapping and
-// parallax occlusion mapping, lit per fragment (Blinn-Phong) by HDR point lights that are also drawn
-// as emissive cubes. It renders into a GL_RGBA16F accumulation texture that stays bound to texture
-// unit 15, which is what every post-process stage reads.
+// The scene as it stands before Tutorial 10, drawn from a SceneDescription (a glTF file: the built-in
+// room of tools/make_scene, or --scene FILE): normal mapping, parallax occlusion mapping where a
+// material has a depth map, per-fragment Blinn-Phong lighting from HDR point and spot lights, and
+// emissive surfaces (the bright sources bloom spreads). It renders into a GL_RGBA16F accumulation
+// texture that stays bound to texture unit 15, which is what every post-process stage reads.
 #pragma once
 #include "t10/camera.hpp"
 #include "t10/contract.hpp"
 #include "t10/gl_object.hpp"
+#include "t10/gltf_scene.hpp"
 #include "t10/image.hpp"
 #include "t10/shader.hpp"
 
-#include <filesystem>
 #include <optional>
 #include <vector>
 
 namespace t10 {
 
-struct PointLight {
-    glm::vec3 position;
-    glm::vec3 colour; // linear HDR intensity it lights the room with (components up to 2.4); its cube shows 40x that
-};
-
 class Scene {
 public:
-    // Loads the TGA textures from assetDir and the scene shaders through `shaders`.
-    Scene(const ShaderManager& shaders, const std::filesystem::path& assetDir);
+    // Uploads the description's geometry and textures; loads the scene shaders through `shaders`.
+    Scene(const ShaderManager& shaders, const SceneDescription& description);
     ~Scene();
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
@@ -40,6 +36,18 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
+    // Interactive speed on software renderers (the window sets these; headless renders keep the
+    // defaults, so the golden images do not change). With render-on-change, render() skips drawing
+    // when the camera and the size are those of the last full-quality frame (the accumulation
+    // texture still holds it); while the camera moves the parallax search takes at most
+    // `movingLayers` steps (default 100, at least 10), and the first frame after it stops is drawn
+    // at full quality again, so a still view looks exactly like a headless render.
+    void setRenderOnChange(bool on, float movingLayers = 100.0f) {
+        renderOnChange_ = on;
+        movingParallaxLayers_ = movingLayers;
+        lastCamera_.clear();
+    }
+
     GLuint accumulationTexture() const { return accumulation_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }
@@ -47,11 +55,15 @@ public:
 private:
     struct Mesh;
     struct Material;
+    std::vector<SceneMaterial> description_; // the materials' settings, which materials_ point into
     std::vector<Mesh> meshes_;
     std::vector<Material> materials_;
-    std::vector<PointLight> lights_;
+    std::vector<Texture> textures_;
+    Texture whiteTexture_;  // stands in for a missing base colour or emissive texture
+    Texture flatNormalTexture_;
+    Texture flatDepthTexture_;
+    std::vector<SceneLight> lights_;
     Program surfaceProgram_;
-    Program lightProgram_;
     Buffer cameraUbo_;
     Buffer lightUbo_;
     Texture accumulation_;
@@ -60,6 +72,10 @@ private:
     std::optional<ImageF> input_;
     int width_ = 0;
     int height_ = 0;
+    float movingParallaxLayers_ = 100.0f;
+    bool renderOnChange_ = false;
+    std::vector<float> lastCamera_; // the camera block of the last drawn frame (empty: none)
+    bool lastFull_ = false;         // that frame was drawn at full quality
 };
 
 } // namespace t10
