@@ -62,10 +62,10 @@ function(t10_add_nan_view name stage input)
         set(fixture ${ARGV5})
     endif()
     set(dir ${root}/nan_${name})
-    # The input sets the size (64x64).
+    # The input sets the size (64x64); --keep-non-finite: the view is what must show the NaN and inf.
     add_test(NAME "view: nan ${name}${label}"
              COMMAND sh -c "mkdir -p ${dir} && ${BIN}/${stage} --headless --backend egl --frames 1 --view nan ${extra} \
-                            --input ${DUMPS}/inputs/${input} --output ${dir}/frame.png --exr ${dir}/hdr.exr \
+                            --keep-non-finite --input ${DUMPS}/inputs/${input} --output ${dir}/frame.png --exr ${dir}/hdr.exr \
                             --dump ${dir} > ${dir}/stdout.txt")
     set_tests_properties("view: nan ${name}${label}" PROPERTIES FIXTURES_SETUP ${fixture} FIXTURES_REQUIRED inputs)
 endfunction()
