@@ -76,3 +76,24 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
+# [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian
+# package: grade-deps installs the pinned flip-evaluator from PyPI into a venv under build/.
+FLIP_VERSION := 1.7
+GRADE_VENV   := $(BUILD)/grade-venv
+REPORT       ?= grade-report
+GRADE_JOBS   ?= $(JOBS)
+.PHONY: grade grade-deps
+grade-deps: PACKAGES += python3-venv
+grade-deps: deps
+	@[ -x $(GRADE_VENV)/bin/flip ] && $(GRADE_VENV)/bin/pip show flip-evaluator 2>/dev/null | grep -qx 'Version: $(FLIP_VERSION)' || { \
+	    rm -rf $(GRADE_VENV) && python3 -m venv $(GRADE_VENV) && \
+	    $(GRADE_VENV)/bin/pip install --quiet --disable-pip-version-check flip-evaluator==$(FLIP_VERSION); }
+
+grade: build grade-deps
+	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)" ] || { echo 'usage: make grade PART=1|2|3 SUBMISSIONS="dir ..." [REPORT=dir]'; exit 2; }
+	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
+
+# The grader's tests need FLIP too.
+test: grade-deps
