@@ -517,6 +517,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
     }
 
     // The final frame (steps 6-10, 19-20, 35): the CPU tone map of the GPU's own buffers.
+    const bool levelsShort = !checks.front().passed;
     {
         Check check = writer.make("frame", frameSteps(part));
         const ImageF* bloom = part >= 2 ? &bloom1 : nullptr;
@@ -548,7 +549,11 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
                     }
                 }
             if (onlyBlack && anyBlack) {
-                check.diagnosis = std::string("likely mistake [") + kBlackNan.id + "]: " + kBlackNan.text;
+                check.diagnosis = std::string("likely mistake [") + kBlackNan.id + "]: " + kBlackNan.text +
+                                  " (the NaN pixels are painted magenta by the grader's probe)";
+            } else if (levelsShort) {
+                check.diagnosis = "follows from " + checks.front().id + ": the final pass reads the key from a level "
+                                  "that is not 1x1 (" + checks.front().diagnosis + ")";
             } else {
                 std::vector<FrameModel> models{{&kWhitePoint, 0.25}, {&kMiddleGrey, ref::kYwhite, 1.0},
                                                {&kNoUnmap, ref::kYwhite, 1.03, Unmap::None},

@@ -25,6 +25,7 @@
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -152,11 +153,36 @@ std::string readFile(const std::string& path) {
 
 std::string tail(const std::string& text, std::size_t lines) {
     std::size_t pos = text.size();
-    for (std::size_t n = 0; n <= lines && pos > 0; ++n) {
+    for (std::size_t n = 0; n <= lines; ++n) {
+        if (pos == 0) return text;
         pos = text.rfind('\n', pos - 1);
         if (pos == std::string::npos) return text;
     }
     return text.substr(pos + 1);
+}
+
+// The NaN probe: a copy of the submission's shaders whose PostProcess.frag paints every NaN output
+// magenta. GL leaves the 8-bit conversion of NaN to the driver and Mesa writes 0, so without the probe
+// a tone map that divides 0 by 0 on black pixels renders exactly like a guarded one. Returns "" when
+// the shader's main() or its vec3/vec4 output cannot be found (the case then runs unprobed).
+std::string writeNanProbe(const std::string& submissionDir, const std::string& referenceDir, const std::string& probeDir) {
+    fs::create_directories(probeDir);
+    for (const auto& entry : fs::directory_iterator(submissionDir)) {
+        if (entry.is_regular_file()) fs::copy_file(entry.path(), fs::path(probeDir) / entry.path().filename(), fs::copy_options::overwrite_existing);
+    }
+    const fs::path own = fs::path(submissionDir) / "PostProcess.frag";
+    const std::string source = readFile(fs::exists(own) ? own.string() : referenceDir + "/PostProcess.frag");
+    const std::regex mainPattern(R"(\bvoid\s+main\s*\(\s*(void)?\s*\))");
+    const std::regex outPattern(R"(\bout\s+(vec3|vec4)\s+(\w+)\s*;)");
+    std::smatch output;
+    if (!std::regex_search(source, mainPattern) || !std::regex_search(source, output, outPattern)) return "";
+    const std::string magenta = output[1] == "vec3" ? "vec3(1.0, 0.0, 1.0)" : "vec4(1.0, 0.0, 1.0, 1.0)";
+    std::ofstream(fs::path(probeDir) / "PostProcess.frag")
+        << std::regex_replace(source, mainPattern, "void t10gradeStudentMain()")
+        << "\n// Added by t10-grade: NaN outputs are painted magenta so that the 8-bit frame shows them.\n"
+        << "void main() {\n    t10gradeStudentMain();\n    if (any(isnan(" << output[2].str() << "))) " << output[2].str()
+        << " = " << magenta << ";\n}\n";
+    return probeDir;
 }
 
 // FNV-1a: names a build folder after what was built.
@@ -420,7 +446,13 @@ Report Grader::grade(const std::string& submission) const {
     for (const CaseSpec& spec : cases(config_.part)) {
         const std::string dir = (out / "runs" / spec.id).string();
         fs::create_directories(dir);
-        const RunResult result = runLimited(renderCommand(binary, spec, sourceDir, dir), limits, dir + "/run.log");
+        std::string shaderDir = sourceDir;
+        if (spec.id == "extremes") {
+            const std::string probe = writeNanProbe(sourceDir, std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage,
+                                                    (out / "runs" / "nan-probe-shaders").string());
+            if (!probe.empty()) shaderDir = probe;
+        }
+        const RunResult result = runLimited(renderCommand(binary, spec, shaderDir, dir), limits, dir + "/run.log");
         if (!result.ok()) {
             const std::string& o = result.output;
             if (result.timedOut || result.signal == SIGXCPU) {
@@ -496,6 +528,9 @@ int main(int argc, char** argv) {
                 } catch (const std::exception& error) {
                     const std::lock_guard<std::mutex> lock(printing);
                     std::cerr << "t10-grade: error: grading " << config.submissions[i] << ": " << error.what() << "\n";
+                    reports[i].submission = submissionName(config.submissions[i]);
+                    reports[i].part = config.part;
+                    reports[i].status = "grader-error";
                     failed = true;
                 }
             }
@@ -503,11 +538,12 @@ int main(int argc, char** argv) {
         std::vector<std::thread> threads;
         for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j) threads.emplace_back(worker);
         for (std::thread& t : threads) t.join();
-        if (failed) return 1;
         const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
         writeGradebook(reports, gradebook);
         std::cout << "wrote " << gradebook << " and a report per submission in " << config.reportDir << "/\n";
-        return 0;
+        // A submission the grader could not grade (status grader-error in the gradebook) is the
+        // grader's failure, not the student's.
+        return failed ? 1 : 0;
     } catch (const std::exception& error) {
         std::cerr << "t10-grade: error: " << error.what() << "\n";
         return 1;

@@ -75,7 +75,9 @@ std::vector<Case> malformedCases(const fs::path& fixtures, const fs::path& work)
     files.push_back({"no_image_type_0", patched(raw, 2, {0})});
     files.push_back({"depth_16", patched(raw, 16, {16})});
     files.push_back({"right_to_left", patched(raw, 17, {0x10})});
-    files.push_back({"pixel_data_truncated", Bytes(raw.begin(), raw.end() - 1)});
+    // One byte short of the pixel data (a file may carry a footer after it).
+    const std::size_t pixelEnd = 18 + raw[0] + std::size_t(raw[12] | raw[13] << 8) * std::size_t(raw[14] | raw[15] << 8) * 3;
+    files.push_back({"pixel_data_truncated", Bytes(raw.begin(), raw.begin() + static_cast<long>(pixelEnd) - 1)});
     files.push_back({"rle_truncated", Bytes(rle.begin(), rle.begin() + static_cast<long>(18 + (rle.size() - 18) / 2))});
     std::vector<Case> cases;
     for (const auto& [name, bytes] : files) {
