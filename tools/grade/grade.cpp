@@ -333,14 +333,14 @@ std::string Grader::build(const std::string& source, std::string& log) const {
     }
     const fs::path temporary = dir.string() + uniqueSuffix();
     fs::create_directories(temporary);
-    fs::copy_file(source, temporary / "Tutorial10.cpp");
     std::vector<std::string> argv{kit_.compiler};
     argv.insert(argv.end(), kit_.flags.begin(), kit_.flags.end());
     for (const std::string& include : kit_.includes) argv.push_back("-I" + include);
     for (const std::string& define : kit_.defines) argv.push_back("-D" + define);
     argv.push_back(std::string("-DT10_STAGE_NAME=\"") + info_.stage + "\"");
     argv.push_back(std::string("-DT10_STAGE_SHADER_DIR=\"") + T10_GRADE_SOURCE_DIR + "/" + info_.stage + "\"");
-    argv.insert(argv.end(), {(temporary / "Tutorial10.cpp").string(), "-o", (temporary / "student").string()});
+    // The submission's own file, so that the compiler's messages name it.
+    argv.insert(argv.end(), {source, "-o", (temporary / "student").string()});
     argv.insert(argv.end(), kit_.libs.begin(), kit_.libs.end());
     {
         // The command, so that an instructor can rebuild it by hand.

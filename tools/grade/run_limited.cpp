@@ -21,9 +21,9 @@ std::string RunResult::describe() const {
     if (timedOut) {
         text << "timed out after " << static_cast<int>(wallSeconds + 0.5) << " s and was killed";
     } else if (signal != 0) {
-        text << "killed by signal " << signal << " (" << strsignal(signal) << ")";
+        text << "was killed by signal " << signal << " (" << strsignal(signal) << ")";
     } else {
-        text << "exit code " << exitCode;
+        text << "ended with exit code " << exitCode;
     }
     return text.str();
 }
