@@ -4,6 +4,8 @@
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
@@ -63,6 +65,26 @@ ByteError byteError(const Image8& a, const Image8& b) {
     }
     error.mean = sum / double(pixels * static_cast<std::size_t>(a.channels));
     error.fractionOverOne = double(overOne) / double(pixels);
+    return error;
+}
+
+PeakError peakRelativeError(const ImageF& gpu, const ImageF& cpu) {
+    if (gpu.width != cpu.width || gpu.height != cpu.height) throw Error("peakRelativeError: images differ in size");
+    PeakError error;
+    double peak[3] = {0.0, 0.0, 0.0};
+    for (int y = 0; y < cpu.height; ++y)
+        for (int x = 0; x < cpu.width; ++x)
+            for (int c = 0; c < 3; ++c) peak[c] = std::max(peak[c], double(cpu.at(x, y, c)));
+    double sum = 0.0;
+    for (int y = 0; y < cpu.height; ++y)
+        for (int x = 0; x < cpu.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                if (peak[c] == 0.0) continue;
+                const double e = std::abs(double(gpu.at(x, y, c)) - double(cpu.at(x, y, c))) / peak[c];
+                error.worst = std::max(error.worst, e);
+                sum += e;
+            }
+    error.mean = sum / (3.0 * cpu.width * cpu.height);
     return error;
 }
 

@@ -32,4 +32,12 @@ struct ByteError {
 };
 ByteError byteError(const Image8& a, const Image8& b);
 
+// Largest and mean |gpu - cpu| over the RGB texels, each relative to its channel's largest value in
+// `cpu` (channels that are zero throughout are left out). Throws t10::Error if the sizes differ.
+struct PeakError {
+    double worst = 0.0;
+    double mean = 0.0;
+};
+PeakError peakRelativeError(const ImageF& gpu, const ImageF& cpu);
+
 } // namespace t10::test

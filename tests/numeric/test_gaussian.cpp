@@ -22,22 +22,8 @@ struct LevelError {
 LevelError compareLevels(const t10::ImageF& gpu, const t10::ImageF& cpu) {
     REQUIRE(gpu.width == cpu.width);
     REQUIRE(gpu.height == cpu.height);
-    LevelError error;
-    double peak[3] = {0.0, 0.0, 0.0};
-    for (int y = 0; y < cpu.height; ++y)
-        for (int x = 0; x < cpu.width; ++x)
-            for (int c = 0; c < 3; ++c) peak[c] = std::max(peak[c], double(cpu.at(x, y, c)));
-    double sum = 0.0;
-    for (int y = 0; y < cpu.height; ++y)
-        for (int x = 0; x < cpu.width; ++x)
-            for (int c = 0; c < 3; ++c) {
-                if (peak[c] == 0.0) continue;
-                const double e = std::abs(double(gpu.at(x, y, c)) - double(cpu.at(x, y, c))) / peak[c];
-                error.worstRelativeToPeak = std::max(error.worstRelativeToPeak, e);
-                sum += e;
-            }
-    error.meanRelativeToPeak = sum / (3.0 * cpu.width * cpu.height);
-    return error;
+    const t10::test::PeakError error = t10::test::peakRelativeError(gpu, cpu);
+    return {error.worst, error.mean};
 }
 
 double channelSum(const t10::ImageF& image, int c) {

@@ -19,7 +19,7 @@ add_test(NAME "grade: write the test submissions"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/make_submissions.py ${PROJECT_SOURCE_DIR} ${GRADE_SUBMISSIONS})
 set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SETUP grade_submissions)
 
-set(GRADE_PART3 reference3 shaders3 rec601 white_point threshold weight tap sigma no_unmapping log2_exp black_nan
+set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weight tap sigma no_unmapping log2_exp black_nan
     bloom_after full_res_offsets ceil_levels swapped_subroutines viewport_reset pass_count
     no_compile shader_error crash loop)
 set(GRADE_PART1 reference1 shaders1)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Writes the grader's test submissions into OUT_DIR/<part>/<name>/: each reference stage, a
-shaders-only copy of each, every known mistake of the catalogue applied to a copy of Part 3, and
-submissions that do not build, whose shader does not compile, that crash and that loop forever.
+shaders-only copy of each, an equivalent rewrite of Part 3's tone map, every known mistake of the
+catalogue applied to a copy of Part 3, and submissions that do not build, whose shader does not
+compile, that crash and that loop forever.
 
 Every mistake is one textual change of the current reference file, so it never drifts from it; a
 change whose text is no longer found is an error (exit 1), not a silently unchanged copy.
@@ -16,6 +17,12 @@ HOST = "Tutorial10.cpp"
 # name: (file, [(old, new), ...]) applied to Part 3. Shader mistakes are shaders-only submissions (the
 # reference host code is used); host mistakes carry only Tutorial10.cpp.
 MISTAKES = {
+    # Not a mistake: the same operator written differently (log10 through log, the luminance as a sum)
+    # must still score 100, so the tolerances leave room for float rounding.
+    "equivalent": ("PostProcess.frag", [("return log2(fVal) * 0.30102999566374217366165225171822f;",
+                                         "return log(fVal) / log(10.0f);"),
+                                        ("float fY = dot(v3RetColour, v3LuminanceConvert);",
+                                         "float fY = v3RetColour.r * 0.2126f + v3RetColour.g * 0.7152f + v3RetColour.b * 0.0722f;")]),
     "rec601": ("PostProcessInit.frag", [("vec3(0.2126f, 0.7152f, 0.0722f)", "vec3(0.299f, 0.587f, 0.114f)")]),
     "white_point": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.25f;")]),
     "threshold": ("PostProcessInit.frag", [("fYwhite * 2.95f", "fYwhite * 2.5f")]),
