@@ -112,16 +112,30 @@ struct KeyModel {
     bool log2Pass = false;
 };
 
-double modelMappedKey(const ImageF& accumulation, const KeyModel& model) {
+// One pixel's range-mapped log luminance as GL_R16 stores it, with the model's mistake made.
+double modelMapped(const ref::Rgb& colour, const KeyModel& model) {
     const double logEps = std::log(ref::kEpsilon);
+    const double lum = dot(model.weights, colour);
+    const double l = model.log2Pass ? std::log2(lum + ref::kEpsilon) : std::log(lum + ref::kEpsilon);
+    return ref::toUnorm16((l - logEps) / (std::log(model.yw) - logEps));
+}
+
+double modelMappedKey(const ImageF& accumulation, const KeyModel& model) {
     double sum = 0.0;
     for (int y = 0; y < accumulation.height; ++y)
-        for (int x = 0; x < accumulation.width; ++x) {
-            const double lum = dot(model.weights, texel(accumulation, x, y));
-            const double l = model.log2Pass ? std::log2(lum + ref::kEpsilon) : std::log(lum + ref::kEpsilon);
-            sum += ref::toUnorm16((l - logEps) / (std::log(model.yw) - logEps));
-        }
+        for (int x = 0; x < accumulation.width; ++x) sum += modelMapped(texel(accumulation, x, y), model);
     return sum / (double(accumulation.width) * double(accumulation.height));
+}
+
+// Largest difference, in R16 steps, between luminance level 0 and a model of it.
+double worstLuminanceSteps(const ImageF& level0, const ImageF& accumulation,
+                           const std::function<double(const ref::Rgb&)>& mapped) {
+    if (level0.width != accumulation.width || level0.height != accumulation.height) return 1e9;
+    double worst = 0.0;
+    for (int y = 0; y < accumulation.height; ++y)
+        for (int x = 0; x < accumulation.width; ++x)
+            worst = std::max(worst, std::abs(level0.at(x, y, 0) - mapped(texel(accumulation, x, y))) * 65535.0);
+    return worst;
 }
 
 // The value the final pass reads with its huge bias: the average of the smallest level written.
@@ -377,6 +391,35 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
                                   ? std::string("likely mistake [") + kCeilLevels.id + "]: " + kCeilLevels.text
                                   : levels == 0 ? "no luminance texture on unit 16 (steps 12-13)"
                                                 : "the luminance texture does not have the full mip chain";
+        }
+        checks.push_back(check);
+    }
+
+    // Luminance level 0 (steps 3-5): every pixel's range-mapped log luminance.
+    {
+        Check check = writer.make("log-luminance", {3, 4, 5});
+        const ImageF level0 = dump.level(16, 0);
+        const double worst = worstLuminanceSteps(level0, acc, [](const ref::Rgb& c) {
+            return ref::toUnorm16(ref::rangeMappedLogLuminance(ref::luminance(c)));
+        });
+        // The GPU's float log differs from the double one by about 1e-7 of the mapped range, far below
+        // one R16 step (1.5e-5): a texel can only round to the neighbouring step. The read-back float
+        // (value / 65535) adds about 0.001 of a step.
+        constexpr double kSteps = 1.01;
+        check.passed = worst <= kSteps;
+        check.measured = "largest difference " + format(worst) + " R16 steps over " + std::to_string(acc.width) + "x" +
+                         std::to_string(acc.height) + " pixels";
+        check.tolerance = "<= 1.01 R16 steps: float vs double log rounds at most to the neighbouring step";
+        if (!check.passed) {
+            const std::vector<KeyModel> models{{&kRec601, kRec601Weights}, {&kWhitePoint, kRec709Weights, 0.25},
+                                               {&kLog2Pass, kRec709Weights, ref::kYwhite, true}};
+            check.diagnosis = diagnose<KeyModel>(
+                models,
+                [&](const KeyModel& m) {
+                    return worstLuminanceSteps(level0, acc, [&](const ref::Rgb& c) { return modelMapped(c, m); });
+                },
+                [&](double e) { return e <= kSteps; }, worst,
+                "no known mistake matches: check the luminance, log and range mapping of PostProcessInit.frag");
         }
         checks.push_back(check);
     }

@@ -87,6 +87,12 @@ constexpr const char* kUsage =
     "  --timeout   wall-clock limit of one render, in seconds (default 60); builds get 300\n"
     "  --cache     where built submissions and the reference renders are kept (default " T10_GRADE_CACHE_DIR ")\n";
 
+std::string submissionName(const std::string& path) {
+    fs::path p = fs::path(path).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();
+    return p.filename().string();
+}
+
 Config parse(int argc, char** argv) {
     Config config;
     auto number = [](const std::string& option, const std::string& text, double low, double high) {
@@ -129,20 +135,18 @@ Config parse(int argc, char** argv) {
     if (config.part == 0) throw UsageError("--part is required (1, 2 or 3)");
     if (config.submissions.empty()) throw UsageError("no SUBMISSION folder given");
     std::set<std::string> names;
+    const fs::path report = fs::weakly_canonical(fs::absolute(config.reportDir));
     for (const std::string& s : config.submissions) {
         if (!fs::is_directory(s)) throw UsageError(s + ": not a folder");
-        const std::string name = fs::path(s).lexically_normal().filename().string().empty()
-                                     ? fs::path(s).lexically_normal().parent_path().filename().string()
-                                     : fs::path(s).lexically_normal().filename().string();
+        const std::string name = submissionName(s);
         if (!names.insert(name).second) throw UsageError(s + ": two submissions are named '" + name + "'");
+        // The report folder of a submission is emptied first: it must not be, or hold, the submission.
+        const fs::path folder = fs::weakly_canonical(fs::absolute(s));
+        const fs::path target = report / name;
+        const auto [end, unused] = std::mismatch(target.begin(), target.end(), folder.begin(), folder.end());
+        if (end == target.end()) throw UsageError("--report " + config.reportDir + " would overwrite the submission " + s);
     }
     return config;
-}
-
-std::string submissionName(const std::string& path) {
-    fs::path p = fs::path(path).lexically_normal();
-    if (p.filename().empty()) p = p.parent_path();
-    return p.filename().string();
 }
 
 std::string readFile(const std::string& path) {

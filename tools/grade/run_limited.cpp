@@ -60,8 +60,13 @@ RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits,
         if (null >= 0) ::dup2(null, STDIN_FILENO);
         if (!workingDirectory.empty() && ::chdir(workingDirectory.c_str()) != 0) _exit(126);
         ::execvp(args[0], args.data());
-        const std::string message = std::string("cannot run ") + args[0] + ": " + std::strerror(errno) + "\n";
-        [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message.data(), message.size());
+        // Only async-signal-safe calls between fork and exec: the parent may be multithreaded.
+        static const char kFailed[] = "cannot run the command: ";
+        const char* reason = ::strerror(errno);
+        [[maybe_unused]] auto written = ::write(STDERR_FILENO, kFailed, sizeof kFailed - 1);
+        written = ::write(STDERR_FILENO, args[0], std::strlen(args[0]));
+        written = ::write(STDERR_FILENO, ": ", 2);
+        written = ::write(STDERR_FILENO, reason, std::strlen(reason));
         _exit(127);
     }
     ::close(log);

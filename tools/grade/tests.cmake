@@ -31,7 +31,8 @@ foreach(part 1 2 3)
     endforeach()
     add_test(NAME "grade: part ${part} batch with --jobs 2"
              COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/part${part} ${folders})
-    set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES
+    # COST: ctest starts the long batches first, beside the many short tests.
+    set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES COST 1000
                          FIXTURES_SETUP grade_part${part} FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
     add_test(NAME "grade: part ${part} reports, scores and diagnoses"
              COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/part${part} ${GRADE_PART${part}})
@@ -61,7 +62,8 @@ foreach(case
         "2;no SUBMISSION folder given;--part;1"
         "2;/nonexistent-submission: not a folder;--part;1;/nonexistent-submission"
         "2;--jobs 0: expected a number from 1 to 64;--part;1;--jobs;0;${GRADE_SUBMISSIONS}"
-        "2;unknown option --bogus;--part;1;--bogus")
+        "2;unknown option --bogus;--part;1;--bogus"
+        "2;would overwrite the submission;--part;1;--report;${PROJECT_SOURCE_DIR};${PROJECT_SOURCE_DIR}/tutorial10_part1_tonemap")
     list(POP_FRONT case code regex)
     string(REPLACE ";" " " label "${case}")
     add_test(NAME "grade: usage t10-grade ${label}" COMMAND ${EXPECT} ${code} "${regex}" -- ${PROJECT_BINARY_DIR}/bin/t10-grade ${case})

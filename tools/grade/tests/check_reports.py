@@ -16,7 +16,7 @@ EXPECTED = {
     "reference1": ("graded", []), "shaders1": ("graded", []),
     "reference2": ("graded", []), "shaders2": ("graded", []),
     "reference3": ("graded", []), "shaders3": ("graded", []), "equivalent": ("graded", []),
-    "rec601": ("graded", [("pot.key", "rec601", 3), ("pot.bloom-threshold", "rec601", 18)]),
+    "rec601": ("graded", [("pot.log-luminance", "rec601", 3), ("pot.key", "rec601", 3), ("pot.bloom-threshold", "rec601", 18)]),
     "white_point": ("graded", [("pot.frame", "white-point", 9)]),
     "threshold": ("graded", [("pot.bloom-threshold", "bloom-threshold", 18)]),
     "weight": ("graded", [("pot.frame", "bloom-weight", 20)]),
