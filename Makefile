@@ -65,7 +65,7 @@ clean:
 # gnuplot draws the plot; only this target needs it.
 bench-passes: PACKAGES += gnuplot-nox
 bench-passes: build
-	tests/bench/bench_passes.sh $(BIN) $(OUT) 10 5 1280x720 3
+	tools/bench_passes/bench_passes.sh $(BIN) $(OUT) 10 5 1280x720 3
 
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).

@@ -7,30 +7,43 @@
 //   37  the white point Yw as a uniform of both post-process shaders (and of the range mapping),
 //       and a switch that turns the bloom off to show the tone mapping alone;
 //   38  the bloom threshold as a multiple of Yw (0.5-4.0) and the bloom's weight as a uniform;
-//   39  the number of blur pass pairs (0-16), each pass timed with GL_TIME_ELAPSED queries, and
-//       --bench N, which prints the median GPU time of every pass;
+//   39  the number of blur pass pairs (0-16), each pass timed with GL_TIME_ELAPSED queries (the
+//       common --bench N prints the median GPU time of every pass);
 //   40  a GL_R16F luminance texture without the range mapping, rebuilt on the fly, with a warning
 //       when the key read back from its 1x1 level is NaN or infinite.
-// Each step's code is marked "[step N]". common/src/panel.cpp holds the UI glue (ImGui set-up, widgets, key
-// edges, option checks, the timer-query pool, the benchmark table), which is not part of a step.
+// Each step's code is marked "[step N]". The frame loop in common/ calls this file's panel, keys
+// and timers (see main()); common/src/imgui_host.cpp holds the Dear ImGui host and widgets, and
+// common/include/t10/contract.hpp the tutorial's defaults and the shaders' uniform locations.
 #include "t10/app.hpp"
 
-// [step 37] The exercises' panel (Dear ImGui and extras/Panel.cpp), options (CLI11) and keys (GLFW)
-#include "t10/panel.hpp"
+// [step 37] The exercises' panel (Dear ImGui), options (CLI11), keys (GLFW), and the defaults and
+// uniform locations they share with the shaders
+#include "t10/cli_range.hpp"
+#include "t10/contract.hpp"
+#include "t10/imgui_host.hpp"
+#include "t10/keys.hpp"
 
 #include <CLI/CLI.hpp>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include <chrono>
 #include <iostream>
 #include <string>
+
+namespace loc = t10::contract::extras;
 // [/step 37]
+
+// [step 39] GPU pass timers
+#include "t10/gpu_timers.hpp"
+// [/step 39]
 
 #include <glm/glm.hpp>
 
-// [step 40] std::isfinite for the scene key check
+// [step 40] std::isfinite for the scene key check, read back a few frames late
+#include "t10/readback.hpp"
+
 #include <cmath>
+#include <optional>
 // [/step 40]
 
 using namespace glm;
@@ -72,45 +85,38 @@ GLuint g_uiBlur;
 // constant 0.22), now a uniform of both post-process shaders. g_bBloom off shows the tone map alone.
 const float g_fWhitePointMin = 0.05f;
 const float g_fWhitePointMax = 2.0f;
-float g_fWhitePoint = 0.22f;
+float g_fWhitePoint = (float)t10::contract::kWhitePoint;
 bool g_bBloom = true;
 // [/step 37]
 
 // [step 38] The bloom threshold, a multiple of Yw, and the weight the bloom is added with
 const float g_fBloomThresholdMin = 0.5f;
 const float g_fBloomThresholdMax = 4.0f;
-float g_fBloomThreshold = 2.95f;
+float g_fBloomThreshold = (float)t10::contract::kBloomThresholdFactor;
 const float g_fBloomStrengthMin = 0.0f;
 const float g_fBloomStrengthMax = 4.0f;
-float g_fBloomStrength = 0.98f;
+float g_fBloomStrength = (float)t10::contract::kBloomWeight;
 // [/step 38]
 
 // [step 39] The number of blur pass pairs (the tutorial's constant 5) and the time each pass takes
 const int g_iBlurPassesMax = 16;
-int g_iBlurPasses = 5;
-t10::ui::PassTimers g_PassTimers;
-// --bench N: N timed frames after g_iBenchWarmUp untimed ones, then the table (and the CSV)
-const int g_iBenchWarmUp = 3;
-int g_iBench = 0;
-std::string g_strBenchCsv;
-bool g_bBenchDone = false;
-bool g_bBenchRunning = false;
+int g_iBlurPasses = t10::contract::kBlurPasses;
+// Created, opened and closed every frame, and read back by common/'s frame loop (Stage::timers)
+t10::PassTimers g_PassTimers;
 // [/step 39]
 
 // [step 40] The luminance texture's format: GL_R16 with the range mapping, or GL_R16F without it
 bool g_bLuminanceR16F = false;
-bool g_bRebuild = false;          // the format changed: rebuild the texture before the next frame
 int g_iLuminanceLevels = 1;       // levels of g_uiLuminanceKey; the last one is 1x1
+t10::TexelReadback g_KeyReadback; // copies that level without waiting: the key is a few frames old
 float g_fSceneKey = 0.0f;         // Ya, read back from that level
 bool g_bSceneKeyValid = true;     // false while the read-back key is NaN or infinite
 bool g_bSceneKeyReported = false; // the warning goes to stderr once per run
 // [/step 40]
 
 // [step 37] The window's panel and keyboard shortcuts
-t10::App* g_pApp = nullptr;
-t10::ui::ImGuiPanel g_Panel;
 bool g_bShowPanel = true;
-t10::ui::KeyEdges g_Keys;
+t10::KeyEdges g_Keys;
 // [/step 37]
 
 bool GL_Init(t10::App& app)
@@ -215,32 +221,23 @@ bool GL_Init(t10::App& app)
     t10::requireCompleteFramebuffer(GL_DRAW_FRAMEBUFFER, "g_uiFBOBloom");
     // [/step 30]
 
-    // [step 39] One GL_TIME_ELAPSED query per pass, for a few frames in flight
-    g_PassTimers.create();
-    // [/step 39]
-
-    // [step 37] The settings panel, in a window only (a headless frame stays exactly Part 3's)
-    g_pApp = &app;
-    if (app.context().isWindow()) g_Panel.create(app.context().window());
-    // [/step 37]
-
     return true;
 }
 
 void GL_RenderPostProcess()
 {
     // [step 37] The white point (both programs) and the bloom switch
-    glProgramUniform1f(g_uiPostProcInitProgram, 0, g_fWhitePoint);
-    glProgramUniform1f(g_uiPostProcProgram, 0, g_fWhitePoint);
-    glProgramUniform1i(g_uiPostProcProgram, 3, g_bBloom);
+    glProgramUniform1f(g_uiPostProcInitProgram, loc::kWhitePointLocation, g_fWhitePoint);
+    glProgramUniform1f(g_uiPostProcProgram, loc::kWhitePointLocation, g_fWhitePoint);
+    glProgramUniform1i(g_uiPostProcProgram, loc::kBloomSwitchLocation, g_bBloom);
     // [/step 37]
     // [step 38] The bloom threshold (a multiple of Yw) and the bloom's weight
-    glProgramUniform1f(g_uiPostProcInitProgram, 1, g_fBloomThreshold);
-    glProgramUniform1f(g_uiPostProcProgram, 1, g_fBloomStrength);
+    glProgramUniform1f(g_uiPostProcInitProgram, loc::kBloomThresholdLocation, g_fBloomThreshold);
+    glProgramUniform1f(g_uiPostProcProgram, loc::kBloomStrengthLocation, g_fBloomStrength);
     // [/step 38]
     // [step 40] The range mapping only suits the integer GL_R16 texture
-    glProgramUniform1i(g_uiPostProcInitProgram, 2, !g_bLuminanceR16F);
-    glProgramUniform1i(g_uiPostProcProgram, 2, !g_bLuminanceR16F);
+    glProgramUniform1i(g_uiPostProcInitProgram, loc::kRangeMappingLocation, !g_bLuminanceR16F);
+    glProgramUniform1i(g_uiPostProcProgram, loc::kRangeMappingLocation, !g_bLuminanceR16F);
     // [/step 40]
 
     // [step 39] Time the luminance pass
@@ -376,14 +373,17 @@ void GL_RenderPostProcess()
 
 // [step 40] Read the scene key back from the 1x1 level of the luminance texture. With GL_R16F,
 // hardware whose glGenerateMipmap mishandles float formats leaves NaN (or infinity) there, and
-// every pixel of the frame turns black: say so instead of failing silently.
+// every pixel of the frame turns black: say so instead of failing silently. The copy is queued
+// every frame and read once the GPU has made it, so no frame waits for it.
 void GL_CheckSceneKey()
 {
-    const t10::ImageF key = t10::readTextureLevel(g_uiLuminanceKey, g_iLuminanceLevels - 1);
-    float fYa = key.data.empty() ? 0.0f : key.data[0];
+    g_KeyReadback.request(g_uiLuminanceKey, g_iLuminanceLevels - 1);
+    const std::optional<float> fKey = g_KeyReadback.poll();
+    if (!fKey) return;
+    float fYa = *fKey;
     if (!g_bLuminanceR16F) {
         // Undo the range mapping, as the post-process shader does
-        const float fEpsilon = 0.00000001f;
+        const float fEpsilon = (float)t10::contract::kEpsilon;
         fYa = (fYa * (log(g_fWhitePoint) - log(fEpsilon))) + log(fEpsilon);
     }
     g_bSceneKeyValid = std::isfinite(fYa);
@@ -401,11 +401,11 @@ void GL_CheckSceneKey()
 // [/step 40]
 
 // [step 37] The settings panel (window mode): one widget per setting, each with its shortcut
-void GL_RenderPanel()
+void GL_RenderPanel(t10::App& app)
 {
-    g_Panel.begin("Tutorial 10 extras");
-    ImGui::Text("frame %.2f ms (%.0f fps)", g_pApp->frameTimeMs(),
-                g_pApp->frameTimeMs() > 0.0 ? 1000.0 / g_pApp->frameTimeMs() : 0.0);
+    if (!g_bShowPanel) return;
+    t10::ui::beginPanel("Tutorial 10 extras");
+    ImGui::Text("frame %.2f ms (%.0f fps)", app.frameTimeMs(), app.frameTimeMs() > 0.0 ? 1000.0 / app.frameTimeMs() : 0.0);
 
     t10::ui::heading("Step 37: white point");
     t10::ui::sliderFloat("Yw", &g_fWhitePoint, g_fWhitePointMin, g_fWhitePointMax, "Up/Down", "%.3f", true);
@@ -422,7 +422,7 @@ void GL_RenderPanel()
     t10::ui::heading("Step 39: blur passes");
     t10::ui::sliderInt("passes", &g_iBlurPasses, 0, g_iBlurPassesMax, "PgUp/PgDn, 0-9");
     double dPostMs = 0.0;
-    for (const t10::ui::PassTime& pass : g_PassTimers.latest()) {
+    for (const t10::PassTime& pass : g_PassTimers.latest()) {
         ImGui::Text("  %-12s %8.3f ms", pass.name.c_str(), pass.ms);
         if (pass.name != "scene") dPostMs += pass.ms;
     }
@@ -431,7 +431,7 @@ void GL_RenderPanel()
 
     // [step 40] Luminance format and the key read back
     t10::ui::heading("Step 40: luminance format");
-    if (t10::ui::checkbox("GL_R16F, no range mapping", &g_bLuminanceR16F, "L")) g_bRebuild = true;
+    if (t10::ui::checkbox("GL_R16F, no range mapping", &g_bLuminanceR16F, "L")) app.requestRebuild();
     ImGui::Text("  key Ya = %.5g", g_fSceneKey);
     if (!g_bSceneKeyValid) {
         t10::ui::warning(std::string("The key read back is ") + (std::isnan(g_fSceneKey) ? "NaN" : "infinite") +
@@ -442,14 +442,13 @@ void GL_RenderPanel()
 
     ImGui::Spacing();
     ImGui::TextDisabled("R resets every setting, H hides this panel");
-    g_Panel.end();
+    t10::ui::endPanel();
 }
 
 // Edge-triggered shortcuts (WASD, Q/E, Shift, the mouse and Esc belong to common/'s camera)
-void GL_HandleKeys()
+void GL_HandleKeys(t10::App& app)
 {
-    GLFWwindow* pWindow = g_pApp->context().window();
-    if (pWindow == nullptr || g_Panel.wantsKeyboard()) return;
+    GLFWwindow* pWindow = app.context().window();
     if (g_Keys.pressed(pWindow, GLFW_KEY_H)) g_bShowPanel = !g_bShowPanel;
     if (g_Keys.pressed(pWindow, GLFW_KEY_UP)) g_fWhitePoint = min(g_fWhitePoint * 1.25f, g_fWhitePointMax);
     if (g_Keys.pressed(pWindow, GLFW_KEY_DOWN)) g_fWhitePoint = max(g_fWhitePoint / 1.25f, g_fWhitePointMin);
@@ -472,67 +471,32 @@ void GL_HandleKeys()
     // [step 40] Luminance format key
     if (g_Keys.pressed(pWindow, GLFW_KEY_L)) {
         g_bLuminanceR16F = !g_bLuminanceR16F;
-        g_bRebuild = true;
+        app.requestRebuild();
     }
     // [/step 40]
     if (g_Keys.pressed(pWindow, GLFW_KEY_R)) {
-        g_fWhitePoint = 0.22f;
+        g_fWhitePoint = (float)t10::contract::kWhitePoint;
         g_bBloom = true;
-        g_fBloomThreshold = 2.95f;
-        g_fBloomStrength = 0.98f;
-        g_iBlurPasses = 5;
-        g_bRebuild = g_bRebuild || g_bLuminanceR16F;
+        g_fBloomThreshold = (float)t10::contract::kBloomThresholdFactor;
+        g_fBloomStrength = (float)t10::contract::kBloomWeight;
+        g_iBlurPasses = t10::contract::kBlurPasses;
+        if (g_bLuminanceR16F) app.requestRebuild();
         g_bLuminanceR16F = false;
     }
 }
 // [/step 37]
 
-// [step 39] --bench N: warm up, then time N whole frames; print the median of every pass
-bool GL_Init(t10::App& app);
-void GL_Quit();
-void GL_Render(t10::App& app);
-
-void GL_RunBench(t10::App& app)
+// [step 39] The heading of a --bench table: the settings it ran with
+std::string GL_BenchSettings()
 {
-    t10::ui::BenchTable table;
-    g_bBenchRunning = true;
-    for (int i = 0; i < g_iBenchWarmUp + g_iBench; i++) {
-        const auto start = std::chrono::steady_clock::now();
-        GL_Render(app);
-        glFinish();
-        const double dWallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        g_PassTimers.collect(true);
-        if (i >= g_iBenchWarmUp) table.add(g_PassTimers.latest(), dWallMs);
-    }
-    g_bBenchRunning = false;
-    std::cout << T10_STAGE_NAME " benchmark: " << g_iWindowWidth << "x" << g_iWindowHeight << ", " << g_iBlurPasses
-              << " blur passes, bloom " << (g_bBloom ? "on" : "off") << ", " << (g_bLuminanceR16F ? "GL_R16F" : "GL_R16")
-              << " luminance; median of " << g_iBench << " frames after " << g_iBenchWarmUp << " warm-up frames\n";
-    table.print(std::cout);
-    if (!g_strBenchCsv.empty()) {
-        table.writeCsv(g_strBenchCsv);
-        std::cout << "wrote " << g_strBenchCsv << "\n";
-    }
-    // In a window the benchmark is all that was asked for
-    if (app.context().isWindow()) glfwSetWindowShouldClose(app.context().window(), GLFW_TRUE);
+    return std::to_string(g_iBlurPasses) + " blur passes, bloom " + (g_bBloom ? "on" : "off") + ", " +
+           (g_bLuminanceR16F ? "GL_R16F" : "GL_R16") + " luminance";
 }
 // [/step 39]
 
 void GL_Render(t10::App& app)
 {
-    // [step 40] A new luminance format needs a new texture: rebuild what GL_Init made, as a resize does
-    if (g_bRebuild) {
-        g_bRebuild = false;
-        GL_Quit();
-        GL_Init(app);
-    }
-    // [/step 40]
-    // [step 39] The benchmark runs once, before the first ordinary frame
-    if (g_iBench > 0 && !g_bBenchDone) {
-        g_bBenchDone = true;
-        GL_RunBench(app);
-    }
-    g_PassTimers.beginFrame();
+    // [step 39] Time the scene (common/ opens the timers' frame before GL_Render and closes it after)
     g_PassTimers.begin("scene");
     // [/step 39]
 
@@ -547,19 +511,9 @@ void GL_Render(t10::App& app)
 
     GL_RenderPostProcess();
 
-    // [step 39] The pass times of finished frames (without waiting for this one)
-    g_PassTimers.endFrame();
-    if (!g_bBenchRunning) g_PassTimers.collect(false);
-    // [/step 39]
     // [step 40] Check the scene key
     GL_CheckSceneKey();
     // [/step 40]
-    // [step 37] Shortcuts and the panel, drawn over the finished frame
-    if (g_Panel.active() && !g_bBenchRunning) {
-        GL_HandleKeys();
-        if (g_bShowPanel) GL_RenderPanel();
-    }
-    // [/step 37]
 }
 
 void GL_Quit()
@@ -585,13 +539,9 @@ void GL_Quit()
     glDeleteProgram(g_uiGaussProgram);
     // [/step 30]
 
-    // [step 39] Delete the timer queries
-    g_PassTimers.destroy();
-    // [/step 39]
-
-    // [step 37] Delete the panel (GL_Init creates it again after a resize)
-    g_Panel.destroy();
-    // [/step 37]
+    // [step 40] Delete the key's read-back buffers (with their pending copies)
+    g_KeyReadback.destroy();
+    // [/step 40]
 }
 
 // [step 37] The command-line options of the exercises (out-of-range values exit 2 with the range),
@@ -599,27 +549,23 @@ void GL_Quit()
 void GL_AddOptions(CLI::App& cli)
 {
     cli.add_option("--white-point", g_fWhitePoint, "Step 37: the white point Yw, the smallest luminance shown as pure "
-                                                   "white (default 0.22)")
-        ->check(t10::ui::inRange(g_fWhitePointMin, g_fWhitePointMax));
+                                                   "white")
+        ->capture_default_str()
+        ->check(t10::inRange(g_fWhitePointMin, g_fWhitePointMax));
     cli.add_flag_callback("--no-bloom", [] { g_bBloom = false; }, "Step 37: turn the bloom off (the tone mapping alone)");
     // [step 38] Threshold and strength options
     cli.add_option("--bloom-threshold", g_fBloomThreshold, "Step 38: bloom where the luminance reaches this multiple "
-                                                           "of Yw (default 2.95)")
-        ->check(t10::ui::inRange(g_fBloomThresholdMin, g_fBloomThresholdMax));
-    cli.add_option("--bloom-strength", g_fBloomStrength, "Step 38: the weight the bloom is added with (default 0.98)")
-        ->check(t10::ui::inRange(g_fBloomStrengthMin, g_fBloomStrengthMax));
+                                                           "of Yw")
+        ->capture_default_str()
+        ->check(t10::inRange(g_fBloomThresholdMin, g_fBloomThresholdMax));
+    cli.add_option("--bloom-strength", g_fBloomStrength, "Step 38: the weight the bloom is added with")
+        ->capture_default_str()
+        ->check(t10::inRange(g_fBloomStrengthMin, g_fBloomStrengthMax));
     // [/step 38]
-    // [step 39] Pass count and benchmark options
-    cli.add_option("--blur-passes", g_iBlurPasses, "Step 39: horizontal + vertical blur pass pairs (default 5)")
-        ->check(t10::ui::inRange(0, g_iBlurPassesMax, true));
-    CLI::Option* pBench = cli.add_option("--bench", g_iBench,
-                                         "Step 39: render N frames after " + std::to_string(g_iBenchWarmUp) +
-                                             " warm-up frames and print the median GPU time of each pass (use "
-                                             "with --headless)")
-                              ->check(t10::ui::inRange(1, 100000, true));
-    cli.add_option("--bench-csv", g_strBenchCsv, "Step 39: also write the --bench table as CSV "
-                                                 "(pass,median_ms,min_ms,max_ms,frames)")
-        ->needs(pBench);
+    // [step 39] Pass count option (--bench and --bench-csv are common/'s)
+    cli.add_option("--blur-passes", g_iBlurPasses, "Step 39: horizontal + vertical blur pass pairs")
+        ->capture_default_str()
+        ->check(t10::inRange(0, g_iBlurPassesMax, true));
     // [/step 39]
     // [step 40] Luminance format option
     cli.add_option_function<std::string>(
@@ -641,9 +587,16 @@ void GL_AddOptions(CLI::App& cli)
 
 int main(int argc, char** argv)
 {
-    // [step 37] The exercises add their options through GL_AddOptions
-    const t10::Stage stage{T10_STAGE_NAME, "Tutorial 10 stage: " T10_STAGE_NAME " (Part 3 and the exercises, steps 37-40)",
-                           T10_STAGE_SHADER_DIR, GL_Init, GL_Render, GL_Quit, GL_AddOptions};
+    // [step 37] The exercises add their options, shortcuts and panel (drawn with Dear ImGui)
+    t10::Stage stage{T10_STAGE_NAME, "Tutorial 10 stage: " T10_STAGE_NAME " (Part 3 and the exercises, steps 37-40)",
+                     T10_STAGE_SHADER_DIR, GL_Init, GL_Render, GL_Quit, GL_AddOptions};
+    stage.makeUi = t10::ui::makeImGuiHost;
+    stage.keys = GL_HandleKeys;
+    stage.panel = GL_RenderPanel;
     // [/step 37]
+    // [step 39] The pass timers, for the panel and --bench
+    stage.timers = &g_PassTimers;
+    stage.benchSettings = GL_BenchSettings;
+    // [/step 39]
     return t10::runStage(argc, argv, stage);
 }

@@ -8,11 +8,6 @@ if(NOT TARGET extras)
     return()
 endif()
 
-# halo_radius: the RMS radius of the bloom around a hot pixel, from a --dump folder (used by
-# tests/bench/bench_passes.sh, `make bench-passes`).
-add_executable(halo_radius bench/halo_radius.cpp)
-target_link_libraries(halo_radius PRIVATE t10_common t10_flags)
-
 # --- Renders for the numeric checks (fixture extras_dumps; the inputs come from make_test_images). --
 
 # t10_add_extras_dump(<name> <args...>): one frame of extras into ${DUMPS}/<name>/ (as t10_add_dump,
@@ -41,7 +36,7 @@ t10_add_extras_dump(extras_thr400 ${SCENE} --bloom-threshold 4.0)
 t10_add_extras_dump(extras_yw050_thr100 ${SCENE} --white-point 0.5 --bloom-threshold 1.0)
 t10_add_extras_dump(extras_str000 ${SCENE} --bloom-strength 0)
 t10_add_extras_dump(extras_str200 ${SCENE} --bloom-strength 2)
-# Step 39: the hot pixel (128x128, tests/tools/make_test_images) through 0 to 8 pass pairs.
+# Step 39: the hot pixel (128x128, tools/make_test_images) through 0 to 8 pass pairs.
 foreach(n 0 1 2 3 5 8)
     t10_add_extras_dump(extras_hot_p${n} --input ${DUMPS}/inputs/hot.exr --blur-passes ${n})
 endforeach()

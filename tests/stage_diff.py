@@ -18,12 +18,15 @@ Prints every offending line with its file and line number, and exits 1 if there 
 """
 import collections
 import difflib
+import os
 import pathlib
-import re
 import sys
 
+# The one step-marker parser, shared with the site.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "markers"))
+import markers  # noqa: E402
+
 ALLOWED = {".cpp", ".vert", ".frag", ".geom", ".comp", ".tesc", ".tese"}
-MARKER = re.compile(r"^\s*//\s*\[(/?)step (\d+)\]")
 
 
 def header_length(lines):
@@ -38,25 +41,14 @@ def header_length(lines):
 
 
 def step_of_each_line(lines, path, problems):
-    """For each line, the innermost step block it is in (marker lines count as inside), or None."""
-    stack, owner = [], []
-    for number, line in enumerate(lines, 1):
-        match = MARKER.match(line)
-        if match and not match.group(1):
-            stack.append(int(match.group(2)))
-            owner.append(stack[-1])
-            continue
-        if match:
-            step = int(match.group(2))
-            if not stack or stack[-1] != step:
-                problems.append(f"{path}:{number}: [/step {step}] does not close the open block {stack[-1:] or 'none'}")
-            else:
-                owner.append(stack.pop())
-                continue
-        owner.append(stack[-1] if stack else None)
-    if stack:
-        problems.append(f"{path}: [step {stack[-1]}] is never closed")
-    return owner
+    """For each line, the innermost step block it is in (marker lines count as inside), or None.
+    A malformed marker is a problem, and then no line counts as inside a step."""
+    try:
+        _, blocks = markers.parse("\n".join(lines), str(path))
+    except markers.MarkerError as error:
+        problems.append(str(error))
+        return [None] * len(lines)
+    return markers.owners(lines, blocks)
 
 
 def main():

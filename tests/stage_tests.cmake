@@ -6,17 +6,28 @@ set(GOLDEN_TEST ${GOLDEN}/golden_test.sh)
 set(GOLDEN_ARGS --backend egl --size 640x360 --camera default --frames 1)
 find_program(XVFB_RUN xvfb-run)
 
-# --- Golden image of every stage, and proof that each golden rejects a wrong image. -----------
-set(previous "")
-foreach(stage IN LISTS T10_STAGES)
+# --- Per stage: --help, the golden image and proof that it rejects a wrong image, the stage rule. -----
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(STAGE_DIFF ${CMAKE_CURRENT_SOURCE_DIR}/stage_diff.py)
+
+# t10_add_stage_tests(<stage> [AFTER <previous stage> STEPS <first> <last>] [SAME_GOLDEN_AS <stage>])
+# AFTER/STEPS: the stage adds exactly those tutorial steps to <previous stage> (tests/stage_diff.py),
+# and <previous stage>'s image must fail this stage's golden. SAME_GOLDEN_AS: a program whose
+# default frame must equal another stage's golden (extras/ with default settings renders Part 3).
+function(t10_add_stage_tests stage)
+    cmake_parse_arguments(PARSE_ARGV 1 ARG "" "AFTER;SAME_GOLDEN_AS" "STEPS")
     add_test(NAME "cli: ${stage} --help"
              COMMAND ${EXPECT} 0 "--camera TEXT" -- ${BIN}/${stage} --help)
-    get_property(same GLOBAL PROPERTY T10_GOLDEN_OF_${stage})
-    if(same)
-        # A program that must reproduce another stage's frame exactly (extras/ with its defaults).
-        add_test(NAME "golden: ${stage} reproduces ${same}"
-                 COMMAND ${GOLDEN_TEST} ${BIN} ${OUT}/golden ${stage} --golden ${same})
-        continue()
+    if(ARG_AFTER)
+        list(JOIN ARG_STEPS "-" range)
+        add_test(NAME "stage diff: ${ARG_AFTER} -> ${stage} holds only steps ${range}"
+                 COMMAND ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${ARG_AFTER}
+                         ${PROJECT_SOURCE_DIR}/${stage} ${ARG_STEPS})
+    endif()
+    if(ARG_SAME_GOLDEN_AS)
+        add_test(NAME "golden: ${stage} reproduces ${ARG_SAME_GOLDEN_AS}"
+                 COMMAND ${GOLDEN_TEST} ${BIN} ${OUT}/golden ${stage} --golden ${ARG_SAME_GOLDEN_AS})
+        return()
     endif()
     add_test(NAME "golden: ${stage}" COMMAND ${GOLDEN_TEST} ${BIN} ${OUT}/golden ${stage})
     # A visibly altered copy of the stage's own golden must fail.
@@ -24,31 +35,69 @@ foreach(stage IN LISTS T10_STAGES)
              COMMAND ${BIN}/imgcompare ${GOLDEN}/${stage}.png ${GOLDEN}/${stage}.png ${GOLDEN}/${stage}.tolerance
                      --alter --expect-reject)
     # The previous stage's image must fail this stage's golden.
-    if(previous)
-        add_test(NAME "golden rejects: ${previous} as ${stage}"
-                 COMMAND ${BIN}/imgcompare ${GOLDEN}/${stage}.png ${GOLDEN}/${previous}.png
+    if(ARG_AFTER)
+        add_test(NAME "golden rejects: ${ARG_AFTER} as ${stage}"
+                 COMMAND ${BIN}/imgcompare ${GOLDEN}/${stage}.png ${GOLDEN}/${ARG_AFTER}.png
                          ${GOLDEN}/${stage}.tolerance --expect-reject)
     endif()
-    set(previous ${stage})
-endforeach()
+endfunction()
 
-# --- The stage rule: each stage's diff from the previous one holds exactly its part's steps. ---
-find_package(Python3 REQUIRED COMPONENTS Interpreter)
-set(STAGE_DIFF ${CMAKE_CURRENT_SOURCE_DIR}/stage_diff.py)
-set(previous "")
-foreach(stage IN LISTS T10_STAGES)
-    get_property(steps GLOBAL PROPERTY T10_STEPS_OF_${stage})
-    if(previous AND steps)
-        add_test(NAME "stage diff: ${previous} -> ${stage} holds only steps ${steps}"
-                 COMMAND ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${previous}
-                         ${PROJECT_SOURCE_DIR}/${stage} ${steps})
-    endif()
-    set(previous ${stage})
-endforeach()
+t10_add_stage_tests(tutorial10_part0_start)
+t10_add_stage_tests(tutorial10_part1_tonemap AFTER tutorial10_part0_start STEPS 1 16)
+t10_add_stage_tests(tutorial10_part2_bloom AFTER tutorial10_part1_tonemap STEPS 17 25)
+t10_add_stage_tests(tutorial10_part3_gaussian AFTER tutorial10_part2_bloom STEPS 26 36)
+if(TARGET extras)
+    t10_add_stage_tests(extras AFTER tutorial10_part3_gaussian STEPS 37 40 SAME_GOLDEN_AS tutorial10_part3_gaussian)
+endif()
 # The check can fail: Part 2 measured against Part 1's step range holds steps 17-25 too many.
 add_test(NAME "stage diff: rejects steps of another part"
          COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${PROJECT_SOURCE_DIR}/tutorial10_part0_start ${PROJECT_SOURCE_DIR}/tutorial10_part2_bloom 1 16)
+
+# A malformed marker is a problem too (the parser is tools/markers, shared with the site).
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old/Tutorial10.cpp "int a;\n")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new/Tutorial10.cpp "int a;\n// [step 1] b\nint b;\n")
+add_test(NAME "stage diff: rejects a step block that is never closed"
+         COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+                 ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new 1 1)
+
+# --- Layers: no header of common/ includes stage, test or tool code, nor the Dear ImGui host. ----
+set(LAYERS ${CMAKE_CURRENT_SOURCE_DIR}/layers.py)
+add_test(NAME "layers: common/ headers include nothing from a higher layer"
+         COMMAND ${EXPECT} 0 "layers respected" -- ${Python3_EXECUTABLE} ${LAYERS} ${PROJECT_SOURCE_DIR}/common/include)
+# The check can fail: a copy of the headers where one includes the numeric tests' reference.
+file(REMOVE_RECURSE ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
+file(COPY ${PROJECT_SOURCE_DIR}/common/include/t10 DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
+file(READ ${PROJECT_SOURCE_DIR}/common/include/t10/scene.hpp scene_header)
+string(REPLACE "#pragma once\n" "#pragma once\n#include \"reference.hpp\"\n" scene_header "${scene_header}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/layers_check/t10/scene.hpp "${scene_header}")
+add_test(NAME "layers: rejects a common/ header that includes a test's header"
+         COMMAND ${EXPECT} 1 "scene.hpp:[0-9]+: includes \"reference.hpp\"" --
+                 ${Python3_EXECUTABLE} ${LAYERS} ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
+
+# --- The contract: every stage's shaders agree with common/include/t10/contract.hpp. -----------
+set(CONTRACT_CHECK ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/contract_check.py
+    ${PROJECT_SOURCE_DIR}/common/include/t10/contract.hpp)
+set(shader_dirs ${PROJECT_SOURCE_DIR}/common/shaders)
+foreach(stage IN LISTS T10_STAGES)
+    list(APPEND shader_dirs ${PROJECT_SOURCE_DIR}/${stage})
+endforeach()
+add_test(NAME "contract: shaders agree with contract.hpp" COMMAND ${EXPECT} 0 "all agree" -- ${CONTRACT_CHECK} ${shader_dirs})
+# The check can fail: Part 3's final shader reading the bloom from unit 18, and extras' with the
+# bloom weight at location 4.
+file(READ ${PROJECT_SOURCE_DIR}/tutorial10_part3_gaussian/PostProcess.frag shader)
+string(REPLACE "binding = 17) uniform sampler2D s2BloomTexture" "binding = 18) uniform sampler2D s2BloomTexture"
+       shader "${shader}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/contract_check/unit18/PostProcess.frag "${shader}")
+file(READ ${PROJECT_SOURCE_DIR}/extras/PostProcess.frag shader)
+string(REPLACE "location = 1) uniform float fBloomStrength" "location = 4) uniform float fBloomStrength" shader "${shader}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/contract_check/location4/PostProcess.frag "${shader}")
+add_test(NAME "contract: rejects a shader with another bloom unit"
+         COMMAND ${EXPECT} 1 "unit of s2BloomTexture is 18, contract.hpp's kBloomUnit is 17" --
+                 ${CONTRACT_CHECK} ${CMAKE_CURRENT_BINARY_DIR}/contract_check/unit18)
+add_test(NAME "contract: rejects a shader with another uniform location"
+         COMMAND ${EXPECT} 1 "location of fBloomStrength is 4, contract.hpp's kBloomStrengthLocation is 1" --
+                 ${CONTRACT_CHECK} ${CMAKE_CURRENT_BINARY_DIR}/contract_check/location4)
 
 # --- The command line (parsed by common/, so one stage is enough). ----------------------------
 set(S0 tutorial10_part0_start)
@@ -75,6 +124,10 @@ endforeach()
 add_test(NAME "cli: --headless with --backend window" COMMAND ${EXPECT} 2 "contradicts" --
          ${BIN}/${S0} --headless --backend window)
 add_test(NAME "cli: --version" COMMAND ${EXPECT} 0 "${S0} [0-9]" -- ${BIN}/${S0} --version)
+# --bench is common/'s: a stage without pass timers reports its frame time.
+add_test(NAME "bench: any stage can be benchmarked"
+         COMMAND ${EXPECT} 0 "^frame +[0-9.]+ +[0-9.]+ +[0-9.]+" --
+                 ${BIN}/${S0} --headless --backend egl --size 160x90 --bench 2 --bench-csv ${OUT}/bench/part0.csv)
 
 # A shader with a syntax error: exit 1, naming the file and quoting the driver's log.
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/broken_shaders/PostProcess.frag

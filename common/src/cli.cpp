@@ -2,6 +2,9 @@
 // into exit code 2 with a message naming the argument.
 #include "t10/cli.hpp"
 
+#include "t10/bench.hpp"
+#include "t10/cli_range.hpp"
+
 #include "t10/camera.hpp"
 #include "t10/error.hpp"
 
@@ -13,8 +16,6 @@
 namespace t10 {
 
 namespace {
-
-constexpr int kMaxSide = 16384;
 
 bool endsWith(const std::string& text, const std::string& suffix) {
     if (text.size() < suffix.size()) return false;
@@ -41,9 +42,9 @@ std::pair<int, int> parseSize(const std::string& text, int minimumSide) {
             throw UsageError("size '" + text + "' is not WIDTHxHEIGHT (for example 1280x720)");
         }
         const int value = std::stoi(part);
-        if (value < minimumSide || value > kMaxSide) {
+        if (value < minimumSide || value > contract::kMaxFramebufferSide) {
             throw UsageError("size '" + text + "': each side must be from " + std::to_string(minimumSide) + " to " +
-                             std::to_string(kMaxSide));
+                             std::to_string(contract::kMaxFramebufferSide));
         }
         return value;
     };
@@ -77,10 +78,18 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
     app.add_option("--input", options.input, "Post-process this HDR image (OpenEXR) instead of rendering the scene")
         ->check(CLI::ExistingFile);
     app.add_option("--dump", options.dumpDir, "After the last frame, write every level of the textures on units "
-                                              "15-17 as PFM files into DIR (for numeric checks)");
+                                              "15-17 (contract.hpp) as PFM files into DIR (for numeric checks)");
     app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
                                                         "minimised window; for tests)");
     app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
+    CLI::Option* bench = app.add_option("--bench", options.bench,
+                                        "Render N frames after " + std::to_string(kBenchWarmUpFrames) +
+                                            " warm-up frames and print the median time of the frame and of each pass "
+                                            "the stage times (use with --headless)")
+                             ->check(inRange(1, 100000, true));
+    app.add_option("--bench-csv", options.benchCsv, "Also write the --bench table as CSV "
+                                                    "(pass,median_ms,min_ms,max_ms,frames)")
+        ->needs(bench);
     if (addOptions) addOptions(app);
 
     try {

@@ -3,8 +3,7 @@
 // get-proc-address function.
 #include "t10/context.hpp"
 
-#include "t10/cli.hpp"
-
+#include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/gl.hpp"
 
@@ -21,16 +20,6 @@
 #include <vector>
 
 namespace t10 {
-
-const char* backendName(Backend backend) {
-    switch (backend) {
-    case Backend::Auto: return "auto";
-    case Backend::Window: return "window";
-    case Backend::Egl: return "egl";
-    case Backend::OsMesa: return "osmesa";
-    }
-    return "?";
-}
 
 namespace {
 
@@ -75,7 +64,7 @@ public:
             glfwTerminate();
             throw Error("window: could not create a window with an OpenGL 4.3 core context");
         }
-        glfwSetWindowSizeLimits(window_, kMinFramebufferSide, kMinFramebufferSide, GLFW_DONT_CARE, GLFW_DONT_CARE);
+        glfwSetWindowSizeLimits(window_, contract::kMinFramebufferSide, contract::kMinFramebufferSide, GLFW_DONT_CARE, GLFW_DONT_CARE);
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(1);
         loadGl(glfwGetProcAddress, "window");

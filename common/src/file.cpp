@@ -1,6 +1,8 @@
 // Whole-file reading shared by the TGA loader and the image readers.
 #include "t10/file.hpp"
 
+#include "t10/error.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -8,15 +10,12 @@
 
 namespace t10 {
 
-bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& fault) {
+std::vector<std::uint8_t> readFile(const std::string& path) {
     // std::fopen sets errno reliably, so the message can say why the file did not open.
     errno = 0;
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file) {
-        fault = std::string("cannot open file: ") + std::strerror(errno);
-        return false;
-    }
-    bytes.clear();
+    if (!file) throw Error(path + ": cannot open file: " + std::strerror(errno));
+    std::vector<std::uint8_t> bytes;
     std::uint8_t chunk[16384];
     for (;;) {
         const std::size_t got = std::fread(chunk, 1, sizeof chunk, file.get());
@@ -25,10 +24,9 @@ bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::st
     }
     if (std::ferror(file.get())) {
         const int error = errno;
-        fault = std::string("cannot read file: ") + (error != 0 ? std::strerror(error) : "read error");
-        return false;
+        throw Error(path + ": cannot read file: " + (error != 0 ? std::strerror(error) : "read error"));
     }
-    return true;
+    return bytes;
 }
 
 } // namespace t10

@@ -50,13 +50,6 @@ FilePtr openFile(const std::string& path, const char* mode) {
     return file;
 }
 
-std::vector<std::uint8_t> readFileBytes(const std::string& path) {
-    std::vector<std::uint8_t> bytes;
-    std::string fault;
-    if (!readFile(path, bytes, fault)) fail(path, fault);
-    return bytes;
-}
-
 template <typename T>
 void checkImage(const std::string& path, const ImageT<T>& image, bool allowGrey) {
     const bool channelsOk = image.channels == 3 || image.channels == 4 || (allowGrey && image.channels == 1);
@@ -101,7 +94,7 @@ void writePng(const std::string& path, const Image8& image) {
 }
 
 Image8 readPng(const std::string& path) {
-    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    const std::vector<std::uint8_t> bytes = readFile(path);
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) fail(path, "file too large");
     const int length = static_cast<int>(bytes.size());
     int w = 0, h = 0, fileChannels = 0;
@@ -207,7 +200,7 @@ void writePfm(const std::string& path, const ImageF& image) {
 }
 
 ImageF readPfm(const std::string& path) {
-    const std::vector<std::uint8_t> bytes = readFileBytes(path);
+    const std::vector<std::uint8_t> bytes = readFile(path);
     std::size_t pos = 0;
     auto isSpace = [](std::uint8_t b) { return b == ' ' || b == '\t' || b == '\n' || b == '\r'; };
     // Header: three whitespace-separated tokens after the magic; one whitespace byte ends it.

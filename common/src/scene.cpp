@@ -5,6 +5,7 @@
 #include "t10/scene.hpp"
 
 #include "t10/error.hpp"
+#include "t10/framebuffer.hpp"
 #include "t10/texture.hpp"
 
 #include <algorithm>
@@ -282,7 +283,7 @@ void Scene::resize(int width, int height) {
     // Immutable storage cannot change size, so a resize makes new objects.
     framebuffer_.reset();
     accumulation_ = makeTexture();
-    glActiveTexture(GL_TEXTURE0 + kAccumulationTextureUnit);
+    glActiveTexture(GL_TEXTURE0 + contract::kAccumulationUnit);
     glBindTexture(GL_TEXTURE_2D, accumulation_.get());
     glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
     // One level only, so a non-mipmap filter; clamping keeps edge taps from wrapping around.
@@ -301,11 +302,8 @@ void Scene::resize(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, accumulation_.get(), 0);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.get());
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    requireCompleteFramebuffer(GL_FRAMEBUFFER, "Scene: accumulation framebuffer");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw Error("Scene: accumulation framebuffer incomplete (glCheckFramebufferStatus returned " +
-                    std::to_string(status) + ")");
 }
 
 void Scene::setInputImage(std::optional<ImageF> image) {
@@ -330,7 +328,7 @@ void Scene::render(const Camera& camera) {
         GLint previousAlignment = 4;
         glGetIntegerv(GL_UNPACK_ALIGNMENT, &previousAlignment);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glActiveTexture(GL_TEXTURE0 + kAccumulationTextureUnit);
+        glActiveTexture(GL_TEXTURE0 + contract::kAccumulationUnit);
         glBindTexture(GL_TEXTURE_2D, accumulation_.get());
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width_, height_, input_->channels == 3 ? GL_RGB : GL_RGBA,
                         GL_FLOAT, input_->data.data());

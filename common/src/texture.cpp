@@ -76,9 +76,7 @@ Texture uploadTexture(const Image8& image, bool srgb) {
 }
 
 Texture loadTextureTga(const std::string& path, bool srgb) {
-    TgaResult result = loadTga(path);
-    if (!result.ok()) throw Error(result.error);
-    return uploadTexture(result.image, srgb);
+    return uploadTexture(loadTga(path), srgb);
 }
 
 } // namespace t10

@@ -5,6 +5,8 @@
 // allocation. Right-to-left files (descriptor bit 4) are rejected: no common writer produces them.
 #include "t10/tga.hpp"
 
+#include "t10/error.hpp"
+
 #include "t10/file.hpp"
 
 #include <algorithm>
@@ -37,11 +39,7 @@ constexpr std::uint8_t kDescriptorTopToBottom = 0x20;
 // Little-endian 16-bit field; the bytes are unsigned so sizes above 127 come out right.
 int readU16(const std::uint8_t* p) { return static_cast<int>(p[0]) | (static_cast<int>(p[1]) << 8); }
 
-TgaResult fail(const std::string& name, const std::string& fault) {
-    TgaResult result;
-    result.error = name + ": " + fault;
-    return result;
-}
+[[noreturn]] void fail(const std::string& name, const std::string& fault) { throw Error(name + ": " + fault); }
 
 // Decodes the RLE stream starting at `pos` into `out` (pixelCount pixels of `bpp` bytes, file
 // order). Packets may cross scan lines: TGA 1.0 writers did that, and it costs nothing to allow.
@@ -71,10 +69,10 @@ std::string decodeRle(const std::uint8_t* bytes, std::size_t size, std::size_t p
 
 } // namespace
 
-TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
+Image8 decodeTga(const std::uint8_t* bytes, std::size_t size, const std::string& name) {
     if (bytes == nullptr) size = 0;
     if (size < kHeaderSize)
-        return fail(name, "truncated header (" + std::to_string(size) + " of 18 bytes)");
+        fail(name, "truncated header (" + std::to_string(size) + " of 18 bytes)");
 
     const std::uint8_t* h = bytes;
     const std::size_t idLength = h[0];
@@ -95,41 +93,41 @@ TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::stri
     case kTypeGrey: grey = true; break;
     case kTypeTrueColourRle: rle = true; break;
     case kTypeGreyRle: grey = true; rle = true; break;
-    case kTypeNoImage: return fail(name, "image type 0 (no image data)");
+    case kTypeNoImage: fail(name, "image type 0 (no image data)");
     case kTypeColourMapped:
     case kTypeColourMappedRle:
-        return fail(name, "unsupported image type " + std::to_string(imageType) +
+        fail(name, "unsupported image type " + std::to_string(imageType) +
                               " (colour-mapped); save the texture as true-colour or grey");
     default:
-        return fail(name, "unsupported image type " + std::to_string(imageType) +
+        fail(name, "unsupported image type " + std::to_string(imageType) +
                               " (expected 2, 3, 10 or 11)");
     }
-    if (colourMapType > 1) return fail(name, "invalid colour-map type " + std::to_string(colourMapType));
+    if (colourMapType > 1) fail(name, "invalid colour-map type " + std::to_string(colourMapType));
 
     if (width == 0 || height == 0)
-        return fail(name, "zero width or height (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+        fail(name, "zero width or height (" + std::to_string(width) + "x" + std::to_string(height) + ")");
     if (width > kTgaMaxSide)
-        return fail(name, "width " + std::to_string(width) + " exceeds " + std::to_string(kTgaMaxSide));
+        fail(name, "width " + std::to_string(width) + " exceeds " + std::to_string(kTgaMaxSide));
     if (height > kTgaMaxSide)
-        return fail(name, "height " + std::to_string(height) + " exceeds " + std::to_string(kTgaMaxSide));
+        fail(name, "height " + std::to_string(height) + " exceeds " + std::to_string(kTgaMaxSide));
 
     if (grey && depth != 8)
-        return fail(name, "unsupported pixel depth " + std::to_string(depth) + " for grey (expected 8)");
+        fail(name, "unsupported pixel depth " + std::to_string(depth) + " for grey (expected 8)");
     if (!grey && depth != 24 && depth != 32)
-        return fail(name, "unsupported pixel depth " + std::to_string(depth) +
+        fail(name, "unsupported pixel depth " + std::to_string(depth) +
                               " for true-colour (expected 24 or 32)");
     if (descriptor & kDescriptorRightToLeft)
-        return fail(name, "unsupported right-to-left pixel order (descriptor bit 4)");
+        fail(name, "unsupported right-to-left pixel order (descriptor bit 4)");
 
     // Skip the image-ID field and, for a true-colour or grey image, any colour map (allowed by the
     // specification and ignored): both by their declared lengths.
     std::size_t pos = kHeaderSize;
-    if (size - pos < idLength) return fail(name, "image-ID field truncated");
+    if (size - pos < idLength) fail(name, "image-ID field truncated");
     pos += idLength;
     if (colourMapType == 1) {
         const std::size_t mapBytes =
             static_cast<std::size_t>(colourMapLength) * ((static_cast<std::size_t>(colourMapEntryBits) + 7u) / 8u);
-        if (size - pos < mapBytes) return fail(name, "colour map truncated");
+        if (size - pos < mapBytes) fail(name, "colour map truncated");
         pos += mapBytes;
     }
 
@@ -139,20 +137,19 @@ TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::stri
     const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     const std::size_t available = size - pos;
     if (!rle && available < pixelCount * bpp)
-        return fail(name, "pixel data truncated (" + std::to_string(available) + " of " +
+        fail(name, "pixel data truncated (" + std::to_string(available) + " of " +
                               std::to_string(pixelCount * bpp) + " bytes)");
     const std::size_t minRleBytes = (pixelCount + kMaxRlePacketPixels - 1) / kMaxRlePacketPixels * (1 + bpp);
     if (rle && available < minRleBytes)
-        return fail(name, "RLE data truncated (" + std::to_string(available) + " bytes cannot hold " +
+        fail(name, "RLE data truncated (" + std::to_string(available) + " bytes cannot hold " +
                               std::to_string(pixelCount) + " pixels)");
 
     // Decode in file order (BGR(A) or grey), then reorder channels and rows in place.
-    TgaResult result;
-    result.image = Image8(width, height, static_cast<int>(bpp));
-    std::uint8_t* out = result.image.data.data();
+    Image8 image(width, height, static_cast<int>(bpp));
+    std::uint8_t* out = image.data.data();
     if (rle) {
         std::string fault = decodeRle(bytes, size, pos, bpp, pixelCount, out);
-        if (!fault.empty()) return fail(name, fault);
+        if (!fault.empty()) fail(name, fault);
     } else {
         std::memcpy(out, bytes + pos, pixelCount * bpp);
     }
@@ -166,13 +163,11 @@ TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::stri
             std::swap_ranges(a, a + rowBytes, b);
         }
     }
-    return result;
+    return image;
 }
 
-TgaResult loadTga(const std::string& path) {
-    std::vector<std::uint8_t> bytes;
-    std::string fault;
-    if (!readFile(path, bytes, fault)) return fail(path, fault);
+Image8 loadTga(const std::string& path) {
+    const std::vector<std::uint8_t> bytes = readFile(path);
     return decodeTga(bytes.data(), bytes.size(), path);
 }
 

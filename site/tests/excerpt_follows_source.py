@@ -21,7 +21,7 @@ import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-BUILD_SITE = os.path.join(HERE, "..", "tools", "build_site.py")
+BUILD_SITE = os.path.join(HERE, "..", "..", "tools", "build_site", "build_site.py")
 
 
 class Failure(Exception):

@@ -1,5 +1,7 @@
 // The GL error log on a real debug context: an invalid call must be recorded with a readable
 // message, or "tests fail on any GL error" would be an empty promise.
+#include "gl_context.hpp"
+
 #include "t10/context.hpp"
 #include "t10/gl.hpp"
 #include "t10/gl_errors.hpp"
@@ -9,12 +11,7 @@
 #include <memory>
 
 TEST_CASE("an invalid GL call is recorded, with the driver's message in debug builds", "[gl_errors]") {
-    t10::ContextOptions options;
-    options.backend = t10::Backend::Egl;
-    options.width = 8;
-    options.height = 8;
-    options.debug = true;
-    const std::unique_ptr<t10::Context> context = t10::Context::create(options);
+    const std::unique_ptr<t10::Context> context = t10::test::makeTestContext();
     t10::GlErrorLog log;
     log.installDebugCallback();
     REQUIRE(log.empty());

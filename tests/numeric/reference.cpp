@@ -7,36 +7,50 @@
 
 namespace t10::ref {
 
-double luminance(const Rgb& c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; }
-
-double rangeMappedLogLuminance(double y) {
-    return (std::log(y + kEpsilon) - std::log(kEpsilon)) / (std::log(kYwhite) - std::log(kEpsilon));
+double luminance(const Rgb& c) {
+    return contract::kLumaRed * c[0] + contract::kLumaGreen * c[1] + contract::kLumaBlue * c[2];
 }
 
-double keyFromMapped(double mapped) {
-    return std::exp(mapped * (std::log(kYwhite) - std::log(kEpsilon)) + std::log(kEpsilon));
+double rangeMappedLogLuminance(double y, const Settings& settings) {
+    return (std::log(y + kEpsilon) - std::log(kEpsilon)) / (std::log(settings.whitePoint) - std::log(kEpsilon));
+}
+
+double keyFromMapped(double mapped, const Settings& settings) {
+    return std::exp(mapped * (std::log(settings.whitePoint) - std::log(kEpsilon)) + std::log(kEpsilon));
 }
 
 double toUnorm16(double v) { return std::round(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0; }
 
-double meanMappedLogLuminance(const ImageF& accumulation, bool asR16) {
+double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Settings& settings) {
     double sum = 0.0;
     for (int y = 0; y < accumulation.height; ++y) {
         for (int x = 0; x < accumulation.width; ++x) {
             const Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
-            const double mapped = rangeMappedLogLuminance(luminance(c));
+            const double mapped = rangeMappedLogLuminance(luminance(c), settings);
             sum += asR16 ? toUnorm16(mapped) : mapped;
         }
     }
     return sum / (double(accumulation.width) * double(accumulation.height));
 }
 
-Rgb toneMap(const Rgb& colour, double sceneKey) {
+double meanLogLuminance(const ImageF& accumulation) {
+    double sum = 0.0;
+    for (int y = 0; y < accumulation.height; ++y) {
+        for (int x = 0; x < accumulation.width; ++x) {
+            const Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
+            sum += std::log(luminance(c) + kEpsilon);
+        }
+    }
+    return sum / (double(accumulation.width) * accumulation.height);
+}
+
+Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
     const double y = luminance(colour);
     if (y <= 0.0) return {0.0, 0.0, 0.0};
     const double middleGrey = 1.03 - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
     const double relative = middleGrey * y / sceneKey;
-    const double mapped = relative * (1.0 + relative / (kYwhite * kYwhite)) / (1.0 + relative);
+    const double yw = settings.whitePoint;
+    const double mapped = relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
     return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
 }
 
@@ -159,16 +173,16 @@ ImageF gaussianBloom(const ImageF& level0, int passes, FloatStore store) {
     return level1;
 }
 
-Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, double bloomWeight) {
+Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, const Settings& settings) {
     Image8 frame(accumulation.width, accumulation.height, 3);
     for (int y = 0; y < accumulation.height; ++y) {
         for (int x = 0; x < accumulation.width; ++x) {
             Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
             if (bloomLevel != nullptr) {
                 const Rgb b = sampleBilinear(*bloomLevel, (x + 0.5) / accumulation.width, (y + 0.5) / accumulation.height);
-                for (int k = 0; k < 3; ++k) c[k] += bloomWeight * b[k];
+                for (int k = 0; k < 3; ++k) c[k] += settings.bloomWeight * b[k];
             }
-            const Rgb mapped = toneMap(c, sceneKey);
+            const Rgb mapped = toneMap(c, sceneKey, settings);
             for (int k = 0; k < 3; ++k) frame.at(x, y, k) = toUnorm8(mapped[k]);
         }
     }

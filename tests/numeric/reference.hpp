@@ -3,6 +3,7 @@
 // downsample and the five-tap importance-sampled Gaussian passes. The numeric tests run it on
 // buffers read back from the GPU and compare.
 #pragma once
+#include "t10/contract.hpp"
 #include "t10/image.hpp"
 
 #include <array>
@@ -10,29 +11,38 @@
 
 namespace t10::ref {
 
-constexpr double kEpsilon = 1e-8;
-constexpr double kYwhite = 0.22;
-constexpr double kBloomThreshold = 2.95 * kYwhite;
-constexpr double kBloomWeight = 0.98;
-constexpr double kSigma = 2.5;
-constexpr double kTap1 = 0.524; // inner taps at +-0.524 sigma
-constexpr double kTap2 = 1.282; // outer taps at +-1.282 sigma
-constexpr int kBlurPasses = 5;
+constexpr double kEpsilon = contract::kEpsilon;
+constexpr double kYwhite = contract::kWhitePoint;
+constexpr double kBloomThresholdFactor = contract::kBloomThresholdFactor;
+constexpr double kBloomThreshold = kBloomThresholdFactor * kYwhite;
+constexpr double kBloomWeight = contract::kBloomWeight;
+constexpr double kSigma = contract::kGaussSigma;
+constexpr double kTap1 = contract::kInnerTap; // inner taps at +-0.524 sigma
+constexpr double kTap2 = contract::kOuterTap; // outer taps at +-1.282 sigma
+constexpr int kBlurPasses = contract::kBlurPasses;
+
+// The settings extras/ makes variable (steps 37-38); the defaults are the tutorial's.
+struct Settings {
+    double whitePoint = kYwhite;
+    double bloomWeight = kBloomWeight;
+};
 
 using Rgb = std::array<double, 3>;
 
 double luminance(const Rgb& c);
 // (log(Y + eps) - log(eps)) / (log(Yw) - log(eps)), not clamped.
-double rangeMappedLogLuminance(double y);
+double rangeMappedLogLuminance(double y, const Settings& settings = {});
 // Inverse of the range mapping followed by exp: the key Ya from a mapped value.
-double keyFromMapped(double mapped);
+double keyFromMapped(double mapped, const Settings& settings = {});
 // Stores v into a GL_R16 texel: clamp to [0, 1], round to the nearest 1/65535.
 double toUnorm16(double v);
 // Mean of the range-mapped log luminance of every pixel; with `asR16`, each value is clamped and
 // quantised as the GL_R16 luminance texture stores it (so pixels above Yw saturate at 1).
-double meanMappedLogLuminance(const ImageF& accumulation, bool asR16);
+double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Settings& settings = {});
+// The unclamped log-average, mean(ln(Y + epsilon)): the tutorial's formula for ln Ya.
+double meanLogLuminance(const ImageF& accumulation);
 // The tone map of steps 8-9 for a linear HDR colour and the key Ya (black stays black).
-Rgb toneMap(const Rgb& colour, double sceneKey);
+Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
 // How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
 std::uint8_t toUnorm8(double v);
 
@@ -61,9 +71,9 @@ ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool hori
 // each pass's result stored as the R11G11B10F targets store it.
 ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses, FloatStore store = FloatStore::Exact);
 
-// The final frame: optionally add weight x bloom (bilinear from the given level) to each
+// The final frame: optionally add the bloom weight x bloom (bilinear from the given level) to each
 // accumulation texel, tone map with Ya, convert to 8 bits.
 Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel = nullptr,
-                  double bloomWeight = kBloomWeight);
+                  const Settings& settings = {});
 
 } // namespace t10::ref

@@ -30,7 +30,7 @@ struct RelativeError {
 
 TEST_CASE("bloom level 0 holds exactly the pixels at or above 2.95 x Yw", "[part2]") {
     const auto dump = loadDump("part2_pot");
-    const t10::ImageF gpu = dump.level(17, 0);
+    const t10::ImageF gpu = dump.bloom(0);
     const t10::ImageF cpu = ref::bloomThreshold(dump.accumulation);
     REQUIRE(gpu.width == cpu.width);
     REQUIRE(gpu.height == cpu.height);
@@ -63,8 +63,8 @@ TEST_CASE("bloom level 0 holds exactly the pixels at or above 2.95 x Yw", "[part
 
 TEST_CASE("bloom level 1 is the 2x2 average of level 0", "[part2]") {
     const auto dump = loadDump("part2_pot");
-    const t10::ImageF level0 = dump.level(17, 0);
-    const t10::ImageF gpu = dump.level(17, 1);
+    const t10::ImageF level0 = dump.bloom(0);
+    const t10::ImageF gpu = dump.bloom(1);
     const t10::ImageF cpu = ref::boxDownsample(level0);
     REQUIRE(gpu.width == cpu.width);
     REQUIRE(gpu.height == cpu.height);
@@ -83,7 +83,7 @@ TEST_CASE("bloom level 1 is the 2x2 average of level 0", "[part2]") {
 
 TEST_CASE("the final frame adds 0.98 x bilinear level-1 bloom before the tone map", "[part2]") {
     const auto dump = loadDump("part2_pot");
-    const t10::ImageF level1 = dump.level(17, 1);
+    const t10::ImageF level1 = dump.bloom(1);
     const t10::Image8 expected = ref::finalFrame(dump.accumulation, ref::keyFromMapped(dump.luminanceKey()), &level1);
     const auto error = t10::test::byteError(expected, dump.frame);
     std::cout << "part2 final frame vs CPU: max " << error.max << " steps, mean " << error.mean
@@ -98,7 +98,7 @@ TEST_CASE("the final frame adds 0.98 x bilinear level-1 bloom before the tone ma
 TEST_CASE("with nothing above the threshold Part 2 renders exactly what Part 1 renders", "[part2]") {
     const auto part1 = loadDump("part1_dim");
     const auto part2 = loadDump("part2_dim");
-    const t10::ImageF bloom = part2.level(17, 0);
+    const t10::ImageF bloom = part2.bloom(0);
     for (float v : bloom.data) REQUIRE(v == 0.0f);
     const auto error = t10::test::byteError(part1.frame, part2.frame);
     std::cout << "dim input, part1 vs part2: max " << error.max << " steps\n";

@@ -33,62 +33,17 @@ namespace ref = t10::ref;
 
 namespace {
 
-// --- The CPU operator with the white point as a parameter (reference.hpp fixes it at 0.22). ----
+// --- The CPU reference (reference.hpp) at another white point and bloom weight. ----------------
 
-double mapLog(double y, double yw) {
-    return (std::log(y + ref::kEpsilon) - std::log(ref::kEpsilon)) / (std::log(yw) - std::log(ref::kEpsilon));
-}
-
-double keyFromMapped(double mapped, double yw) {
-    return std::exp(mapped * (std::log(yw) - std::log(ref::kEpsilon)) + std::log(ref::kEpsilon));
+ref::Settings at(double yw, double weight = ref::kBloomWeight) {
+    ref::Settings settings;
+    settings.whitePoint = yw;
+    settings.bloomWeight = weight;
+    return settings;
 }
 
 ref::Rgb pixel(const t10::ImageF& image, int x, int y) {
     return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)};
-}
-
-// Mean of the range-mapped log luminance, each value clamped and quantised as GL_R16 stores it.
-double meanMappedR16(const t10::ImageF& accumulation, double yw) {
-    double sum = 0.0;
-    for (int y = 0; y < accumulation.height; ++y)
-        for (int x = 0; x < accumulation.width; ++x)
-            sum += ref::toUnorm16(mapLog(ref::luminance(pixel(accumulation, x, y)), yw));
-    return sum / (double(accumulation.width) * accumulation.height);
-}
-
-// The unclamped log-average: ln Ya = mean(ln(Y + epsilon)), the tutorial's formula.
-double meanLogLuminance(const t10::ImageF& accumulation) {
-    double sum = 0.0;
-    for (int y = 0; y < accumulation.height; ++y)
-        for (int x = 0; x < accumulation.width; ++x)
-            sum += std::log(ref::luminance(pixel(accumulation, x, y)) + ref::kEpsilon);
-    return sum / (double(accumulation.width) * accumulation.height);
-}
-
-ref::Rgb toneMap(const ref::Rgb& colour, double key, double yw) {
-    const double y = ref::luminance(colour);
-    if (y <= 0.0) return {0.0, 0.0, 0.0};
-    const double middleGrey = 1.03 - 2.0 / (2.0 + std::log10(key + 1.0));
-    const double relative = middleGrey * y / key;
-    const double mapped = relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
-    return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
-}
-
-t10::Image8 finalFrame(const t10::ImageF& accumulation, double key, double yw, const t10::ImageF* bloom = nullptr,
-                       double weight = 0.0) {
-    t10::Image8 frame(accumulation.width, accumulation.height, 3);
-    for (int y = 0; y < accumulation.height; ++y)
-        for (int x = 0; x < accumulation.width; ++x) {
-            ref::Rgb c = pixel(accumulation, x, y);
-            if (bloom != nullptr) {
-                const ref::Rgb b =
-                    ref::sampleBilinear(*bloom, (x + 0.5) / accumulation.width, (y + 0.5) / accumulation.height);
-                for (int k = 0; k < 3; ++k) c[k] += weight * b[k];
-            }
-            const ref::Rgb mapped = toneMap(c, key, yw);
-            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = ref::toUnorm8(mapped[k]);
-        }
-    return frame;
 }
 
 // --- What the GPU wrote. ------------------------------------------------------------------------
@@ -96,7 +51,7 @@ t10::Image8 finalFrame(const t10::ImageF& accumulation, double key, double yw, c
 // ln Ya as the final pass sees it: undo the range mapping for GL_R16, take the value as it is for R16F.
 double gpuLogKey(const Dump& dump, double yw, bool r16f) {
     const double value = dump.luminanceKey();
-    return r16f ? value : std::log(keyFromMapped(value, yw));
+    return r16f ? value : std::log(ref::keyFromMapped(value, at(yw)));
 }
 
 int saturatedPixels(const t10::Image8& frame) {
@@ -144,18 +99,6 @@ double secondMoment(const t10::ImageF& image, double scale) {
     return moment / sum;
 }
 
-// Largest |a - b| over all texels of two float images, relative to b's largest value.
-double worstRelativeToPeak(const t10::ImageF& a, const t10::ImageF& b) {
-    REQUIRE(a.width == b.width);
-    REQUIRE(a.height == b.height);
-    double peak = 0.0;
-    for (float v : b.data) peak = std::max(peak, double(v));
-    REQUIRE(peak > 0.0);
-    double worst = 0.0;
-    for (std::size_t i = 0; i < a.data.size(); ++i) worst = std::max(worst, std::abs(double(a.data[i]) - b.data[i]));
-    return worst / peak;
-}
-
 void report(const std::string& what, const t10::test::ByteError& e) {
     std::cout << what << ": max " << e.max << " steps, mean " << e.mean << ", pixels off by more than one step "
               << e.fractionOverOne * 100.0 << "%\n";
@@ -184,7 +127,7 @@ TEST_CASE("extras with default settings renders Part 3's frame and buffers", "[e
     report("extras defaults vs Part 3 (256x256)", frame);
     const double keyExtras = extras.luminanceKey();
     const double keyPart3 = part3.luminanceKey();
-    const double bloomError = worstRelativeToPeak(extras.level(17, 1), part3.level(17, 1));
+    const double bloomError = t10::test::compareLevels(extras.bloom(1), part3.bloom(1)).worstRelativeToPeak;
     std::cout << "  mapped key " << keyExtras << " vs " << keyPart3 << ", blurred bloom worst difference "
               << bloomError << " of peak\n";
     // The same operations on the same inputs: llvmpipe gives bit-identical results. The only
@@ -233,15 +176,15 @@ TEST_CASE("step 37: the white point reaches the range mapping and the tone map",
     for (const auto& [name, yw] : {std::pair<const char*, double>{"extras_yw050", 0.5}, {"extras_yw100", 1.0}}) {
         const auto dump = loadDump(name);
         const double gpuMapped = dump.luminanceKey();
-        const double cpuMapped = meanMappedR16(dump.accumulation, yw);
+        const double cpuMapped = ref::meanMappedLogLuminance(dump.accumulation, true, at(yw));
         // At 256x256 every 2x2 average is exact; each of the 8 levels below level 0 rounds to the
         // nearest R16 step again: half a step per level (the Part 1 bound). Mapping with the wrong
         // Yw in the luminance pass moves the mapped key by thousands of steps.
-        const int roundings = dump.levelCount(16) - 1;
+        const int roundings = dump.luminanceLevels() - 1;
         std::cout << name << ": mapped key GPU " << gpuMapped << " CPU " << cpuMapped << " ("
                   << std::abs(gpuMapped - cpuMapped) * 65535.0 << " R16 steps)\n";
         CHECK(std::abs(gpuMapped - cpuMapped) <= (0.5 * roundings + 0.01) / 65535.0);
-        const auto error = t10::test::byteError(finalFrame(dump.accumulation, keyFromMapped(gpuMapped, yw), yw), dump.frame);
+        const auto error = t10::test::byteError(ref::finalFrame(dump.accumulation, ref::keyFromMapped(gpuMapped, at(yw)), nullptr, at(yw)), dump.frame);
         report(std::string(name) + " frame vs CPU tone map at Yw " + std::to_string(yw), error);
         CHECK(error.max <= kOperatorMaxSteps);
         CHECK(error.mean <= kOperatorMeanSteps);
@@ -250,8 +193,8 @@ TEST_CASE("step 37: the white point reaches the range mapping and the tone map",
 
 TEST_CASE("step 37: --no-bloom is Part 1's tone mapping of the same frame", "[extras][step37]") {
     const auto dump = loadDump("extras_nobloom");
-    const double key = keyFromMapped(dump.luminanceKey(), ref::kYwhite);
-    const auto cpu = t10::test::byteError(finalFrame(dump.accumulation, key, ref::kYwhite), dump.frame);
+    const double key = ref::keyFromMapped(dump.luminanceKey());
+    const auto cpu = t10::test::byteError(ref::finalFrame(dump.accumulation, key), dump.frame);
     report("--no-bloom vs the CPU operator without bloom", cpu);
     CHECK(cpu.max <= kOperatorMaxSteps);
     CHECK(cpu.mean <= kOperatorMeanSteps);
@@ -283,7 +226,7 @@ TEST_CASE("step 38: the bloom takes exactly the pixels at or above threshold x Y
     for (const Run& run : runs) {
         const auto dump = loadDump(run.dump);
         const double threshold = run.yw * run.multiple;
-        const t10::ImageF gpu = dump.level(17, 0);
+        const t10::ImageF gpu = dump.bloom(0);
         const t10::ImageF cpu = ref::bloomThreshold(dump.accumulation, threshold);
         int bright = 0;
         int misclassified = 0;
@@ -320,8 +263,8 @@ TEST_CASE("step 38: a higher threshold leaves less bloom energy", "[extras][step
     std::vector<double> level1;
     for (int i = 0; i < 4; ++i) {
         const auto dump = loadDump(dumps[i]);
-        level0.push_back(luminanceSum(dump.level(17, 0)));
-        level1.push_back(4.0 * luminanceSum(dump.level(17, 1))); // a level-1 texel covers four pixels
+        level0.push_back(luminanceSum(dump.bloom(0)));
+        level1.push_back(4.0 * luminanceSum(dump.bloom(1))); // a level-1 texel covers four pixels
         std::cout << "threshold " << multiples[i] << " x Yw: bloom energy (sum of luminance) " << level0.back()
                   << " before the blur, " << level1.back() << " after\n";
     }
@@ -354,13 +297,13 @@ TEST_CASE("step 38: the strength scales the bloom that is added", "[extras][step
     // precision where the reference is exact; with the bloom weighted by 2 that can add a step where
     // the halo is steep (measured: none beyond the operator's one step). The weight 0.98 instead
     // of the uniform is off by up to 170 steps.
-    const double key = keyFromMapped(strong.luminanceKey(), ref::kYwhite);
-    const t10::ImageF bloom = strong.level(17, 1);
-    const auto error = t10::test::byteError(finalFrame(strong.accumulation, key, ref::kYwhite, &bloom, 2.0), strong.frame);
+    const double key = ref::keyFromMapped(strong.luminanceKey());
+    const t10::ImageF bloom = strong.bloom(1);
+    const auto error = t10::test::byteError(ref::finalFrame(strong.accumulation, key, &bloom, at(ref::kYwhite, 2.0)), strong.frame);
     report("strength 2 vs CPU (GPU bloom x 2)", error);
     CHECK(error.max <= 2);
     CHECK(error.mean <= 0.01);
-    const auto wrong = t10::test::byteError(finalFrame(strong.accumulation, key, ref::kYwhite, &bloom, 0.98), strong.frame);
+    const auto wrong = t10::test::byteError(ref::finalFrame(strong.accumulation, key, &bloom, at(ref::kYwhite, 0.98)), strong.frame);
     report("  (the same with weight 0.98, which must not match)", wrong);
     CHECK(wrong.max > 2);
 }
@@ -372,18 +315,18 @@ TEST_CASE("step 39: more blur passes widen the halo of a hot pixel", "[extras][s
     std::vector<double> moments;
     for (int n : passes) {
         const auto dump = loadDump("extras_hot_p" + std::to_string(n));
-        const t10::ImageF level0 = dump.level(17, 0);
+        const t10::ImageF level0 = dump.bloom(0);
         if (n == 0) {
             // No pass: the final pass reads level 0, unblurred. The 2x2 block's second moment is
             // 4 x (0.5^2 + 0.5^2) / 4 = 0.5 px^2 exactly.
             moments.push_back(secondMoment(level0, 1.0));
-            const double key = keyFromMapped(dump.luminanceKey(), ref::kYwhite);
+            const double key = ref::keyFromMapped(dump.luminanceKey());
             const auto error =
-                t10::test::byteError(finalFrame(dump.accumulation, key, ref::kYwhite, &level0, 0.98), dump.frame);
+                t10::test::byteError(ref::finalFrame(dump.accumulation, key, &level0, at(ref::kYwhite, 0.98)), dump.frame);
             report("0 passes: frame vs CPU with the unblurred level 0 added", error);
             CHECK(error.max <= kOperatorMaxSteps);
         } else {
-            const t10::ImageF gpu = dump.level(17, 1);
+            const t10::ImageF gpu = dump.bloom(1);
             moments.push_back(secondMoment(gpu, 2.0));
             // The same passes on the CPU give the same shape. Each pass stores into R11G11B10F, which
             // Mesa truncates: every texel loses up to 2^-6 of its value per store, so the energy
@@ -441,7 +384,7 @@ TEST_CASE("step 40: where no pixel exceeds Yw, GL_R16F gives GL_R16's key", "[ex
         for (int x = 0; x < r16.accumulation.width; ++x)
             brightest = std::max(brightest, ref::luminance(pixel(r16.accumulation, x, y)));
     REQUIRE(brightest < yw); // the premise: nothing saturates the range mapping
-    const double cpu = meanLogLuminance(r16.accumulation);
+    const double cpu = ref::meanLogLuminance(r16.accumulation);
     const double a = gpuLogKey(r16, yw, false);
     const double b = gpuLogKey(r16f, yw, true);
     std::cout << "dim input, Yw " << yw << " (brightest luminance " << brightest << "): ln Ya GPU R16 " << a
@@ -451,7 +394,7 @@ TEST_CASE("step 40: where no pixel exceeds Yw, GL_R16F gives GL_R16's key", "[ex
     CHECK(std::abs(b - cpu) <= kR16FLogBound);
     CHECK(std::abs(b - a) <= kR16FLogBound + 0.001);
     // The frames agree too: the final shader reads the R16F key without undoing a mapping.
-    const auto frame = t10::test::byteError(finalFrame(r16f.accumulation, std::exp(b), yw), r16f.frame);
+    const auto frame = t10::test::byteError(ref::finalFrame(r16f.accumulation, std::exp(b), nullptr, at(yw)), r16f.frame);
     report("R16F frame vs CPU operator with its key", frame);
     CHECK(frame.max <= kOperatorMaxSteps);
 }
@@ -466,8 +409,8 @@ TEST_CASE("step 40: where pixels exceed Yw, GL_R16F is closer to the true log-av
     for (int y = 0; y < r16.accumulation.height; ++y)
         for (int x = 0; x < r16.accumulation.width; ++x) above += ref::luminance(pixel(r16.accumulation, x, y)) > yw;
     const double fraction = double(above) / (double(r16.accumulation.width) * r16.accumulation.height);
-    const double cpu = meanLogLuminance(r16.accumulation);
-    const double cpuClamped = std::log(keyFromMapped(meanMappedR16(r16.accumulation, yw), yw));
+    const double cpu = ref::meanLogLuminance(r16.accumulation);
+    const double cpuClamped = std::log(ref::keyFromMapped(ref::meanMappedLogLuminance(r16.accumulation, true, at(yw)), at(yw)));
     const double a = gpuLogKey(r16, yw, false);
     const double b = gpuLogKey(r16f, yw, true);
     std::cout << "scene 256x256: " << fraction * 100.0 << "% of pixels above Yw; ln Ya CPU unclamped " << cpu
@@ -479,8 +422,8 @@ TEST_CASE("step 40: where pixels exceed Yw, GL_R16F is closer to the true log-av
     // The clamp's bias must be well outside both bounds for the comparison to mean anything.
     REQUIRE(cpu - cpuClamped > 3.0 * kR16FLogBound);
     CHECK(std::abs(b - cpu) < std::abs(a - cpu));
-    const t10::ImageF bloom = r16f.level(17, 1);
-    const auto frame = t10::test::byteError(finalFrame(r16f.accumulation, std::exp(b), yw, &bloom, 0.98), r16f.frame);
+    const t10::ImageF bloom = r16f.bloom(1);
+    const auto frame = t10::test::byteError(ref::finalFrame(r16f.accumulation, std::exp(b), &bloom, at(yw, 0.98)), r16f.frame);
     report("R16F scene frame vs CPU operator with its key and the GPU bloom", frame);
     CHECK(frame.max <= 2); // bilinear sub-texel rounding of the bloom, as in the strength test
     CHECK(frame.mean <= 0.01);

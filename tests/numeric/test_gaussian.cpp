@@ -9,22 +9,12 @@
 #include <cmath>
 #include <iostream>
 
+using t10::test::compareLevels;
+using t10::test::LevelError;
 using t10::test::loadDump;
 namespace ref = t10::ref;
 
 namespace {
-
-struct LevelError {
-    double worstRelativeToPeak = 0.0; // largest |gpu - cpu| / (largest cpu value of the channel)
-    double meanRelativeToPeak = 0.0;
-};
-
-LevelError compareLevels(const t10::ImageF& gpu, const t10::ImageF& cpu) {
-    REQUIRE(gpu.width == cpu.width);
-    REQUIRE(gpu.height == cpu.height);
-    const t10::test::PeakError error = t10::test::peakRelativeError(gpu, cpu);
-    return {error.worst, error.mean};
-}
 
 double channelSum(const t10::ImageF& image, int c) {
     double sum = 0.0;
@@ -36,7 +26,7 @@ double channelSum(const t10::ImageF& image, int c) {
 // The store rule (truncate or round) the driver used for the bloom texture, measured on level 0,
 // whose exact values are the thresholded accumulation colours.
 ref::FloatStore driverStore(const t10::test::Dump& dump) {
-    const ref::FloatStore store = ref::detectFloatStore(dump.level(17, 0), ref::bloomThreshold(dump.accumulation));
+    const ref::FloatStore store = ref::detectFloatStore(dump.bloom(0), ref::bloomThreshold(dump.accumulation));
     std::cout << dump.dir << ": the driver " << (store == ref::FloatStore::Truncate ? "truncates" : "rounds")
               << " when it stores R11G11B10F\n";
     return store;
@@ -56,8 +46,8 @@ constexpr double kMeanBound = 1e-4;        // of the channel's peak, averaged ov
 TEST_CASE("bloom level 1 after the blur matches five CPU pass pairs of five bilinear taps", "[part3]") {
     for (const char* name : {"part3_pot", "part3_odd"}) {
         const auto dump = loadDump(name);
-        const t10::ImageF level0 = dump.level(17, 0);
-        const t10::ImageF gpu = dump.level(17, 1);
+        const t10::ImageF level0 = dump.bloom(0);
+        const t10::ImageF gpu = dump.bloom(1);
         // Half-size targets round down and match level 1 of the bloom texture.
         CHECK(gpu.width == std::max(1, level0.width / 2));
         CHECK(gpu.height == std::max(1, level0.height / 2));
@@ -72,8 +62,8 @@ TEST_CASE("bloom level 1 after the blur matches five CPU pass pairs of five bili
 
 TEST_CASE("the blur of one hot pixel is symmetric, centred and keeps its energy", "[part3]") {
     const auto dump = loadDump("part3_hot");
-    const t10::ImageF level0 = dump.level(17, 0);
-    const t10::ImageF level1 = dump.level(17, 1);
+    const t10::ImageF level0 = dump.bloom(0);
+    const t10::ImageF level1 = dump.bloom(1);
     // The 2x2 block at 64..65 is exactly texel 32 of the half-size grid: centre (32.5, 32.5).
     double sum = 0.0;
     double sumX = 0.0;

@@ -4,6 +4,7 @@
 // files are built byte by byte here: every one must give "<name>: <fault>", never a crash, an
 // out-of-bounds read (run under ASan) or an allocation sized from an unchecked header.
 #include "t10/image_io.hpp"
+#include "t10/error.hpp"
 #include "t10/tga.hpp"
 
 #include <catch2/catch.hpp>
@@ -61,9 +62,19 @@ Bytes withData(Bytes b, std::size_t count, std::uint8_t value = 0x55) {
     return b;
 }
 
+// The message of the t10::Error that `decode` throws, or "" when it throws nothing.
+template <typename F>
+std::string errorOf(F decode) {
+    try {
+        decode();
+    } catch (const t10::Error& error) {
+        return error.what();
+    }
+    return "";
+}
+
 std::string decodeError(const Bytes& b, const std::string& name = "bad.tga") {
-    const t10::TgaResult r = t10::decodeTga(b.data(), b.size(), name);
-    return r.error;
+    return errorOf([&] { t10::decodeTga(b.data(), b.size(), name); });
 }
 
 // A header followed by `dataBytes` filler bytes, decoded as "bad.tga".
@@ -98,13 +109,13 @@ TEST_CASE("TGA fixtures from an independent writer decode to their reference PNG
         "rgb24_raw_bl_imageid", "tall_grey8_raw_bl",
         "wide_rgb24_rle_bl", "wide_rgb24_raw_tl", "wide_grey8_rle_tl", "wide_rgba32_rle_tl");
     INFO("fixture " << name);
-    const t10::TgaResult tga = t10::loadTga(kFixtureDir + name + ".tga");
-    REQUIRE(tga.error == "");
+    t10::Image8 tga;
+    REQUIRE_NOTHROW(tga = t10::loadTga(kFixtureDir + name + ".tga"));
     const t10::Image8 reference = t10::readPng(kFixtureDir + name + ".png");
-    REQUIRE(tga.image.width == reference.width);
-    REQUIRE(tga.image.height == reference.height);
-    REQUIRE(tga.image.channels == reference.channels);
-    CHECK(tga.image.data == reference.data);
+    REQUIRE(tga.width == reference.width);
+    REQUIRE(tga.height == reference.height);
+    REQUIRE(tga.channels == reference.channels);
+    CHECK(tga.data == reference.data);
 }
 
 TEST_CASE("TGA 7x5 fixtures match the generator formula with row 0 at the bottom and RGB order", "[tga]") {
@@ -114,9 +125,8 @@ TEST_CASE("TGA 7x5 fixtures match the generator formula with row 0 at the bottom
         "rgb24_raw_bl", "rgb24_raw_tl", "rgb24_rle_bl", "rgb24_rle_tl",
         "rgba32_raw_bl", "rgba32_raw_tl", "rgba32_rle_bl", "rgba32_rle_tl", "rgb24_raw_bl_imageid");
     INFO("fixture " << name);
-    const t10::TgaResult tga = t10::loadTga(kFixtureDir + name + ".tga");
-    REQUIRE(tga.ok());
-    const t10::Image8& img = tga.image;
+    t10::Image8 img;
+    REQUIRE_NOTHROW(img = t10::loadTga(kFixtureDir + name + ".tga"));
     REQUIRE(img.width == 7);
     REQUIRE(img.height == 5);
     const int expectedChannels = name.rfind("grey8", 0) == 0 ? 1 : name.rfind("rgba32", 0) == 0 ? 4 : 3;
@@ -130,16 +140,16 @@ TEST_CASE("TGA 7x5 fixtures match the generator formula with row 0 at the bottom
 }
 
 TEST_CASE("TGA wide fixture with header sizes above 127 and RLE runs over 128 pixels", "[tga]") {
-    const t10::TgaResult tga = t10::loadTga(kFixtureDir + "wide_rgb24_rle_bl.tga");
-    REQUIRE(tga.ok());
-    REQUIRE(tga.image.width == 400);
-    REQUIRE(tga.image.height == 2);
+    t10::Image8 tga;
+    REQUIRE_NOTHROW(tga = t10::loadTga(kFixtureDir + "wide_rgb24_rle_bl.tga"));
+    REQUIRE(tga.width == 400);
+    REQUIRE(tga.height == 2);
     // Bottom row (row 0): a ramp of 50, then a run of 350 of (17, 170, 34).
-    CHECK(tga.image.at(49, 0, 0) == 49);
-    for (int x = 50; x < 400; ++x) REQUIRE((tga.image.at(x, 0, 0) == 17 && tga.image.at(x, 0, 1) == 170));
+    CHECK(tga.at(49, 0, 0) == 49);
+    for (int x = 50; x < 400; ++x) REQUIRE((tga.at(x, 0, 0) == 17 && tga.at(x, 0, 1) == 170));
     // Top row: a run of 300 of (200, 40, 90), then a ramp.
-    for (int x = 0; x < 300; ++x) REQUIRE((tga.image.at(x, 1, 0) == 200 && tga.image.at(x, 1, 2) == 90));
-    CHECK(tga.image.at(399, 1, 0) == 99);
+    for (int x = 0; x < 300; ++x) REQUIRE((tga.at(x, 1, 0) == 200 && tga.at(x, 1, 2) == 90));
+    CHECK(tga.at(399, 1, 0) == 99);
 }
 
 TEST_CASE("TGA RLE packets may cross scan lines", "[tga]") {
@@ -150,15 +160,15 @@ TEST_CASE("TGA RLE packets may cross scan lines", "[tga]") {
     Bytes b = makeHeader(h);
     // A run of 4 pixels (two rows' worth minus 2) then a raw packet of 2 pixels.
     b.insert(b.end(), {0x83, 1, 2, 3, 0x01, 10, 20, 30, 40, 50, 60});
-    const t10::TgaResult r = t10::decodeTga(b.data(), b.size(), "cross.tga");
-    REQUIRE(r.ok());
+    t10::Image8 r;
+    REQUIRE_NOTHROW(r = t10::decodeTga(b.data(), b.size(), "cross.tga"));
     // Bottom-left origin: the file's first pixels are the bottom row; BGR in the file, RGB out.
-    CHECK(r.image.at(0, 0, 0) == 3);
-    CHECK(r.image.at(0, 0, 2) == 1);
-    CHECK(r.image.at(0, 1, 0) == 3);
-    CHECK(r.image.at(1, 1, 0) == 30);
-    CHECK(r.image.at(2, 1, 0) == 60);
-    CHECK(r.image.at(2, 1, 2) == 40);
+    CHECK(r.at(0, 0, 0) == 3);
+    CHECK(r.at(0, 0, 2) == 1);
+    CHECK(r.at(0, 1, 0) == 3);
+    CHECK(r.at(1, 1, 0) == 30);
+    CHECK(r.at(2, 1, 0) == 60);
+    CHECK(r.at(2, 1, 2) == 40);
 }
 
 TEST_CASE("TGA colour map on a true-colour image is skipped by its declared length", "[tga]") {
@@ -172,11 +182,11 @@ TEST_CASE("TGA colour map on a true-colour image is skipped by its declared leng
     h.height = 1;
     Bytes b = withData(makeHeader(h), static_cast<std::size_t>(3 * ((entryBits + 7) / 8)), 0xEE);
     b.insert(b.end(), {9, 8, 7});
-    const t10::TgaResult r = t10::decodeTga(b.data(), b.size(), "map.tga");
-    REQUIRE(r.ok());
-    CHECK(r.image.at(0, 0, 0) == 7);
-    CHECK(r.image.at(0, 0, 1) == 8);
-    CHECK(r.image.at(0, 0, 2) == 9);
+    t10::Image8 r;
+    REQUIRE_NOTHROW(r = t10::decodeTga(b.data(), b.size(), "map.tga"));
+    CHECK(r.at(0, 0, 0) == 7);
+    CHECK(r.at(0, 0, 1) == 8);
+    CHECK(r.at(0, 0, 2) == 9);
 }
 
 TEST_CASE("TGA malformed headers give an error naming the file and the fault", "[tga]") {
@@ -188,7 +198,7 @@ TEST_CASE("TGA malformed headers give an error naming the file and the fault", "
         Bytes b = makeHeader(Header{});
         b.resize(7);
         CHECK(decodeError(b) == "bad.tga: truncated header (7 of 18 bytes)");
-        CHECK(t10::decodeTga(nullptr, 100, "null.tga").error == "null.tga: truncated header (0 of 18 bytes)");
+        CHECK(errorOf([] { t10::decodeTga(nullptr, 100, "null.tga"); }) == "null.tga: truncated header (0 of 18 bytes)");
     }
     SECTION("zero width or height") {
         Header h;
@@ -345,11 +355,11 @@ TEST_CASE("TGA truncated or corrupted fixtures never crash", "[tga]") {
     const Bytes full = readBytes(kFixtureDir + name + ".tga");
     const std::size_t pixelBytesEnd = full.size() - 26; // the TGA 2.0 footer is 26 bytes, not needed
     for (std::size_t n = 0; n < pixelBytesEnd; ++n) {
-        const std::string err = t10::decodeTga(full.data(), n, "cut.tga").error;
+        const std::string err = errorOf([&] { t10::decodeTga(full.data(), n, "cut.tga"); });
         INFO("prefix of " << n << " bytes");
         REQUIRE_THAT(err, Catch::StartsWith("cut.tga: ") && Catch::Contains("truncated"));
     }
-    REQUIRE(t10::decodeTga(full.data(), pixelBytesEnd, "cut.tga").ok());
+    REQUIRE_NOTHROW(t10::decodeTga(full.data(), pixelBytesEnd, "cut.tga"));
 
     std::mt19937 rng(1234); // fixed seed: the same mutations every run
     std::uniform_int_distribution<std::size_t> where(0, full.size() - 1);
@@ -357,25 +367,22 @@ TEST_CASE("TGA truncated or corrupted fixtures never crash", "[tga]") {
     for (int i = 0; i < 2000; ++i) {
         Bytes b = full;
         for (int k = 0; k < 3; ++k) b[where(rng)] = static_cast<std::uint8_t>(value(rng));
-        const t10::TgaResult r = t10::decodeTga(b.data(), b.size(), "mutated.tga");
-        if (r.ok()) {
-            REQUIRE(r.image.data.size() == static_cast<std::size_t>(r.image.width) * r.image.height * r.image.channels);
-        } else {
-            REQUIRE_THAT(r.error, Catch::StartsWith("mutated.tga: "));
+        try {
+            const t10::Image8 r = t10::decodeTga(b.data(), b.size(), "mutated.tga");
+            REQUIRE(r.data.size() == static_cast<std::size_t>(r.width) * r.height * r.channels);
+        } catch (const t10::Error& error) {
+            REQUIRE_THAT(error.what(), Catch::StartsWith("mutated.tga: "));
         }
     }
 }
 
 TEST_CASE("TGA missing file gives an error naming the path", "[tga]") {
     const std::string path = kFixtureDir + "does_not_exist.tga";
-    const t10::TgaResult r = t10::loadTga(path);
-    REQUIRE_FALSE(r.ok());
-    CHECK(r.error == path + ": cannot open file: No such file or directory");
-    CHECK(r.image.empty());
+    CHECK_THROWS_AS(t10::loadTga(path), t10::Error);
+    CHECK(errorOf([&] { t10::loadTga(path); }) == path + ": cannot open file: No such file or directory");
 }
 
 TEST_CASE("TGA loadTga on a directory fails cleanly", "[tga]") {
-    const t10::TgaResult r = t10::loadTga(kFixtureDir);
-    REQUIRE_FALSE(r.ok());
-    CHECK_THAT(r.error, Catch::StartsWith(kFixtureDir + ": "));
+    CHECK_THROWS_AS(t10::loadTga(kFixtureDir), t10::Error);
+    CHECK_THAT(errorOf([&] { t10::loadTga(kFixtureDir); }), Catch::StartsWith(kFixtureDir + ": "));
 }

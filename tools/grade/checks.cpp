@@ -13,8 +13,10 @@
 
 #include "compare.hpp"
 #include "reference.hpp"
+#include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
+#include "t10/outputs.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -69,7 +71,9 @@ const Mistake kViewport{"viewport-reset", "missing viewport reset after the blur
 const Mistake kUboReset{"ubo-reset", "missing InvResolution UBO reset after the blur (step 35): the final pass reads "
                                      "with the half-size inverse resolution"};
 
-constexpr ref::Rgb kRec709Weights{0.2126, 0.7152, 0.0722};
+constexpr ref::Rgb kRec709Weights{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
+constexpr int kLuminanceUnit = static_cast<int>(t10::contract::kLuminanceKeyUnit);
+constexpr int kBloomUnit = static_cast<int>(t10::contract::kBloomUnit);
 constexpr ref::Rgb kRec601Weights{0.299, 0.587, 0.114};
 
 double dot(const ref::Rgb& w, const ref::Rgb& c) { return w[0] * c[0] + w[1] * c[1] + w[2] * c[2]; }
@@ -140,9 +144,9 @@ double worstLuminanceSteps(const ImageF& level0, const ImageF& accumulation,
 
 // The value the final pass reads with its huge bias: the average of the smallest level written.
 double gpuMappedKey(const t10::test::Dump& dump) {
-    const int levels = dump.levelCount(16);
+    const int levels = dump.luminanceLevels();
     if (levels == 0) throw Error(dump.dir + ": no luminance texture on unit 16 (steps 12-13)");
-    const ImageF last = dump.level(16, levels - 1);
+    const ImageF last = dump.level(kLuminanceUnit, levels - 1);
     double sum = 0.0;
     for (int y = 0; y < last.height; ++y)
         for (int x = 0; x < last.width; ++x) sum += last.at(x, y, 0);
@@ -276,12 +280,16 @@ ImageF modelBlur(const ImageF& level0, const BlurModel& model, ref::FloatStore s
     return level1;
 }
 
-using t10::test::PeakError;
+struct PeakError {
+    double worst = 0.0; // of the channel's peak
+    double mean = 0.0;
+};
 
 // Blur results of a model against the GPU's; a level of the wrong size is as far off as can be.
 PeakError peakError(const ImageF& gpu, const ImageF& cpu) {
     if (gpu.width != cpu.width || gpu.height != cpu.height) return {1e9, 1e9};
-    return t10::test::peakRelativeError(gpu, cpu);
+    const t10::test::LevelError error = t10::test::compareLevels(gpu, cpu);
+    return {error.worstRelativeToPeak, error.meanRelativeToPeak};
 }
 
 bool allZero(const ImageF& image) {
@@ -364,7 +372,7 @@ std::vector<int> partSteps(int part) { return range(1, part == 1 ? 16 : part == 
 t10::test::Dump loadDumpDir(const std::string& dir) {
     t10::test::Dump dump;
     dump.dir = dir;
-    dump.accumulation = t10::readPfm(dump.path("unit15_level0.pfm"));
+    dump.accumulation = t10::readPfm(dump.path(t10::dumpFileName(t10::contract::kAccumulationUnit, 0)));
     dump.frame = t10::readPng(dump.path("frame.png"));
     return dump;
 }
@@ -380,7 +388,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
         Check check = writer.make("luminance-levels", {13, 15});
         const int side = std::max(acc.width, acc.height);
         const int expected = int(std::floor(std::log2(side))) + 1;
-        const int levels = dump.levelCount(16);
+        const int levels = dump.luminanceLevels();
         check.passed = levels == expected;
         check.measured = std::to_string(levels) + " levels on unit 16 at " + std::to_string(acc.width) + "x" +
                          std::to_string(acc.height);
@@ -398,7 +406,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
     // Luminance level 0 (steps 3-5): every pixel's range-mapped log luminance.
     {
         Check check = writer.make("log-luminance", {3, 4, 5});
-        const ImageF level0 = dump.level(16, 0);
+        const ImageF level0 = dump.level(kLuminanceUnit, 0);
         const double worst = worstLuminanceSteps(level0, acc, [](const ref::Rgb& c) {
             return ref::toUnorm16(ref::rangeMappedLogLuminance(ref::luminance(c)));
         });
@@ -429,7 +437,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
     {
         Check check = writer.make("key", {3, 4, 5, 15});
         const double cpu = ref::meanMappedLogLuminance(acc, true);
-        const int roundings = std::max(0, dump.levelCount(16) - 1);
+        const int roundings = std::max(0, dump.luminanceLevels() - 1);
         const bool exactChain = (acc.width & (acc.width - 1)) == 0 && (acc.height & (acc.height - 1)) == 0;
         // Power-of-two sizes: every 2x2 average is exact and each level rounds to R16 once, half a step
         // per level. Other sizes: glGenerateMipmap's filter is implementation-defined for odd levels, so
@@ -446,7 +454,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             check.diagnosis = diagnose<KeyModel>(
                 models, [&](const KeyModel& m) { return std::abs(gpuKey - modelMappedKey(acc, m)); },
                 [&](double e) { return e <= bound; }, std::abs(gpuKey - cpu),
-                dump.levelCount(16) > 0 && dump.level(16, dump.levelCount(16) - 1).width > 1
+                dump.luminanceLevels() > 0 && dump.level(kLuminanceUnit, dump.luminanceLevels() - 1).width > 1
                     ? std::string("likely mistake [") + kCeilLevels.id + "]: " + kCeilLevels.text
                     : "no known mistake matches: check the luminance, log and range mapping of PostProcessInit.frag");
         }
@@ -458,15 +466,15 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
     if (part >= 2) {
         // Bloom level 0 (steps 17-18): exactly the pixels at or above 2.95 x Yw, with their colour.
         Check check = writer.make("bloom-threshold", {17, 18});
-        if (dump.levelCount(17) < 2) {
-            check.measured = std::to_string(dump.levelCount(17)) + " levels on unit 17";
+        if (dump.levelCount(kBloomUnit) < 2) {
+            check.measured = std::to_string(dump.levelCount(kBloomUnit)) + " levels on unit 17";
             check.tolerance = "the bloom texture has 2 levels (step 22)";
             check.diagnosis = "no two-level bloom texture on unit 17 (steps 21-23)";
             checks.push_back(check);
             return checks;
         }
-        bloom0 = dump.level(17, 0);
-        bloom1 = dump.level(17, 1);
+        bloom0 = dump.bloom(0);
+        bloom1 = dump.bloom(1);
         const ImageF cpu = ref::bloomThreshold(acc);
         const int wrong = misclassified(acc, bloom0, ThresholdModel{nullptr});
         const double worst = wrong == 0 ? worstStoreError(bloom0, cpu, &cpu) : 0.0;

@@ -2,6 +2,7 @@
 // options through a hook; everything else is parsed and validated here.
 #pragma once
 #include "t10/context.hpp"
+#include "t10/contract.hpp"
 
 #include <functional>
 #include <string>
@@ -29,6 +30,8 @@ struct Options {
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
     bool verbose = false;
+    int bench = 0;        // --bench N: timed frames before the ordinary ones (0: no benchmark)
+    std::string benchCsv; // --bench-csv FILE
 };
 
 // Adds stage-specific options to the parser (extras/); may be empty.
@@ -39,11 +42,7 @@ using AddOptionsHook = std::function<void(CLI::App&)>;
 int parseCommandLine(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
                      Options& options, const AddOptionsHook& addOptions = {});
 
-// The smallest framebuffer side: Part 2's bloom texture has two mipmap levels, and a 1x1 texture
-// can only have one.
-constexpr int kMinFramebufferSide = 2;
-
-// "640x360" -> (640, 360); throws t10::UsageError for anything else or sides outside [lo, 16384].
-std::pair<int, int> parseSize(const std::string& text, int minimumSide = kMinFramebufferSide);
+// "640x360" -> (640, 360); throws t10::UsageError for anything else or sides outside [lo, contract::kMaxFramebufferSide].
+std::pair<int, int> parseSize(const std::string& text, int minimumSide = contract::kMinFramebufferSide);
 
 } // namespace t10

@@ -12,8 +12,6 @@ namespace t10 {
 
 enum class Backend { Auto, Window, Egl, OsMesa };
 
-const char* backendName(Backend backend);
-
 struct ContextOptions {
     Backend backend = Backend::Auto;
     bool headless = false;   // with Backend::Auto: skip the window even if there is a display

@@ -6,8 +6,8 @@
 
 namespace t10 {
 
-// Reads `path` into `bytes`. On failure returns false and sets `fault` to the reason, e.g.
-// "cannot open file: No such file or directory" (without the path: callers put it in front).
-bool readFile(const std::string& path, std::vector<std::uint8_t>& bytes, std::string& fault);
+// Reads `path` whole. Throws t10::Error("<path>: cannot open file: <reason>") (or "cannot read
+// file") with the system's reason.
+std::vector<std::uint8_t> readFile(const std::string& path);
 
 } // namespace t10

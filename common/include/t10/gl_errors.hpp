@@ -22,7 +22,6 @@ public:
     void pollGetError();
 
     bool empty() const { return errors_.empty(); }
-    const std::vector<std::string>& errors() const { return errors_; }
     // "  <error>" lines, one per recorded error.
     std::string describe() const;
     void clear() { errors_.clear(); }

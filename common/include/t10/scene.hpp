@@ -4,6 +4,7 @@
 // unit 15, which is what every post-process stage reads.
 #pragma once
 #include "t10/camera.hpp"
+#include "t10/contract.hpp"
 #include "t10/gl_object.hpp"
 #include "t10/image.hpp"
 #include "t10/shader.hpp"
@@ -13,8 +14,6 @@
 #include <vector>
 
 namespace t10 {
-
-constexpr GLuint kAccumulationTextureUnit = 15;
 
 struct PointLight {
     glm::vec3 position;
@@ -41,9 +40,7 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
-    const std::vector<PointLight>& lights() const { return lights_; }
     GLuint accumulationTexture() const { return accumulation_.get(); }
-    GLuint accumulationFramebuffer() const { return framebuffer_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }
 

@@ -24,7 +24,6 @@ public:
     GLuint createProgram(std::initializer_list<std::string> fileNames) const;
     GLuint createProgram(const std::vector<std::string>& fileNames) const;
 
-    const std::vector<std::filesystem::path>& searchDirs() const { return dirs_; }
 
 private:
     std::vector<std::filesystem::path> dirs_;

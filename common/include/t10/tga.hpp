@@ -13,15 +13,12 @@ namespace t10 {
 // The largest width or height accepted.
 constexpr int kTgaMaxSide = 16384;
 
-struct TgaResult {
-    Image8 image;      // grey (1), RGB (3) or RGBA (4) channels, bottom row first, RGB order
-    std::string error; // empty on success; otherwise "<name>: <fault>"
-    bool ok() const { return error.empty(); }
-};
-
-// Decodes a TGA held in memory; `name` is only used in error messages.
-TgaResult decodeTga(const std::uint8_t* bytes, std::size_t size, const std::string& name);
-// Reads and decodes a file; a missing or unreadable file is an error like any other.
-TgaResult loadTga(const std::string& path);
+// Decodes a TGA held in memory into grey (1), RGB (3) or RGBA (4) channels, bottom row first, RGB
+// order. Throws t10::Error("<name>: <fault>") on anything it cannot decode; `name` is only used in
+// that message.
+Image8 decodeTga(const std::uint8_t* bytes, std::size_t size, const std::string& name);
+// Reads and decodes a file; a missing or unreadable file is an error like any other
+// ("<path>: cannot open file: <reason>").
+Image8 loadTga(const std::string& path);
 
 } // namespace t10

@@ -3,11 +3,11 @@
 # For each blur pass count from 0 to MAX it
 #   - times the default camera at SIZE with `extras --bench FRAMES` (median GPU time of every pass
 #     from GL_TIME_ELAPSED queries, and the wall-clock frame time), and
-#   - measures the halo: the RMS radius of the bloom of one hot 2x2 block (tests/tools'
-#     make_test_images hot.exr, 128x128), from the bloom texture that the final pass reads. The
+#   - measures the halo: the RMS radius of the bloom of one hot 2x2 block (hot.exr of
+#     tools/make_test_images, 128x128), from the bloom texture that the final pass reads. The
 #     blur works in texels, so the radius in pixels does not depend on the frame size.
 # It writes OUT/bench_passes.csv and plots it into OUT/bench_passes.png (gnuplot).
-# usage: tests/bench/bench_passes.sh BIN_DIR OUT_DIR [MAX_PASSES=10] [FRAMES=5] [SIZE=1280x720] [REPEATS=3]
+# usage: tools/bench_passes/bench_passes.sh BIN_DIR OUT_DIR [MAX_PASSES=10] [FRAMES=5] [SIZE=1280x720] [REPEATS=3]
 set -euo pipefail
 bin=$1 out=$2 max=${3:-10} frames=${4:-5} size=${5:-1280x720} repeats=${6:-3}
 work=$out/bench_passes

@@ -6,23 +6,24 @@ Code that a step of the tutorial adds is wrapped in
     ...
     // [/step 13]
 
-(`#` instead of `//` works too). A step may have several blocks in one file and across files, and
-blocks may nest (step 9 inside step 8). This module parses them strictly: an unmatched or crossed
-marker is an error that names the file and line, so a typo cannot silently drop an excerpt.
+in C++ and GLSL alike (a stage folder holds nothing else). A step may have several blocks in one
+file and across files, and blocks may nest (step 9 inside step 8). This module parses them
+strictly: an unmatched or crossed marker is an error that names the file and line, so a typo
+cannot silently drop an excerpt. It is the one parser of the markers: the site
+(tools/build_site/build_site.py) and the stage-rule check (tests/stage_diff.py) both use it.
 """
 
 import re
 import textwrap
 
-OPEN = re.compile(r"^(?P<indent>[ \t]*)(?P<comment>//|#)[ \t]*\[step (?P<step>\d+)\][ \t]?(?P<title>.*?)[ \t]*$")
-CLOSE = re.compile(r"^[ \t]*(?://|#)[ \t]*\[/step (?P<step>\d+)\][ \t]*$")
+OPEN = re.compile(r"^(?P<indent>[ \t]*)(?P<comment>//)[ \t]*\[step (?P<step>\d+)\][ \t]?(?P<title>.*?)[ \t]*$")
+CLOSE = re.compile(r"^[ \t]*//[ \t]*\[/step (?P<step>\d+)\][ \t]*$")
 
 # File extensions whose step markers are read, and the highlighter language of each.
 LANGUAGES = {
     ".cpp": "cpp", ".cc": "cpp", ".cxx": "cpp", ".hpp": "cpp", ".h": "cpp",
     ".frag": "glsl", ".vert": "glsl", ".geom": "glsl", ".comp": "glsl", ".tesc": "glsl",
     ".tese": "glsl", ".glsl": "glsl",
-    ".cmake": "cmake", ".txt": "cmake",
 }
 
 
@@ -35,7 +36,7 @@ class Block:
         self.step = step          # step number
         self.title = title        # text after the marker
         self.indent = indent      # indentation of the opening marker
-        self.comment = comment    # "//" or "#"
+        self.comment = comment    # "//"
         self.start = start        # 0-based index of the opening marker line
         self.end = None           # 0-based index of the closing marker line
         self.children = []
@@ -47,6 +48,15 @@ class Block:
     @property
     def last_line(self):   # 1-based number of the last line inside the block
         return self.end
+
+
+def owners(lines, blocks):
+    """For each line, the step of the innermost block it is in (marker lines count as inside), or None."""
+    owner = [None] * len(lines)
+    for block in blocks:  # outermost first, so nested blocks overwrite their lines
+        for i in range(block.start, block.end + 1):
+            owner[i] = block.step
+    return owner
 
 
 def language_of(path):

@@ -55,6 +55,28 @@ Tolerance readTolerance(const std::string& path) {
     return tolerance;
 }
 
+ImageDifference imageDifference(const Image8& a, const Image8& b, int threshold) {
+    ImageDifference result;
+    const std::size_t pixels = static_cast<std::size_t>(a.width) * static_cast<std::size_t>(a.height);
+    if (pixels == 0) return result;
+    std::size_t over = 0;
+    double sum = 0.0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        int worst = 0;
+        for (int c = 0; c < a.channels; ++c) {
+            const std::size_t i = p * static_cast<std::size_t>(a.channels) + static_cast<std::size_t>(c);
+            const int difference = std::abs(int(a.data[i]) - int(b.data[i]));
+            worst = std::max(worst, difference);
+            sum += difference;
+        }
+        result.maxError = std::max(result.maxError, worst);
+        if (worst > threshold) ++over;
+    }
+    result.fractionOverThreshold = double(over) / double(pixels);
+    result.meanError = sum / double(pixels * static_cast<std::size_t>(a.channels));
+    return result;
+}
+
 Comparison compareImages(const Image8& expected, const Image8& actual, const Tolerance& tolerance) {
     Comparison result;
     std::ostringstream summary;
@@ -66,22 +88,10 @@ Comparison compareImages(const Image8& expected, const Image8& actual, const Tol
         result.summary = summary.str();
         return result;
     }
-    const std::size_t pixels = static_cast<std::size_t>(expected.width) * static_cast<std::size_t>(expected.height);
-    std::size_t failing = 0;
-    double sum = 0.0;
-    for (std::size_t p = 0; p < pixels; ++p) {
-        int worst = 0;
-        for (int c = 0; c < expected.channels; ++c) {
-            const std::size_t i = p * static_cast<std::size_t>(expected.channels) + static_cast<std::size_t>(c);
-            const int difference = std::abs(int(expected.data[i]) - int(actual.data[i]));
-            worst = std::max(worst, difference);
-            sum += difference;
-        }
-        result.maxError = std::max(result.maxError, worst);
-        if (worst > tolerance.threshold) ++failing;
-    }
-    result.failingFraction = pixels == 0 ? 0.0 : double(failing) / double(pixels);
-    result.meanError = pixels == 0 ? 0.0 : sum / double(pixels * static_cast<std::size_t>(expected.channels));
+    const ImageDifference difference = imageDifference(expected, actual, tolerance.threshold);
+    result.maxError = difference.maxError;
+    result.failingFraction = difference.fractionOverThreshold;
+    result.meanError = difference.meanError;
     result.passed = result.failingFraction <= tolerance.maxFraction && result.meanError <= tolerance.maxMean;
     summary << "failing pixels " << result.failingFraction * 100.0 << "% (max " << tolerance.maxFraction * 100.0
             << "%, threshold " << tolerance.threshold << "), mean error " << result.meanError << " (max "

@@ -26,6 +26,15 @@ struct Comparison {
 // must carry a reason after '#'. Throws t10::Error naming the file and line otherwise.
 Tolerance readTolerance(const std::string& path);
 
+// The difference of two 8-bit images of the same size, in 8-bit steps: the one metric of the golden
+// tests and the numeric tests. A pixel is over the threshold when any channel differs by more.
+struct ImageDifference {
+    int maxError = 0;
+    double meanError = 0.0;             // over all channels of all pixels
+    double fractionOverThreshold = 0.0; // of the pixels
+};
+ImageDifference imageDifference(const Image8& a, const Image8& b, int threshold);
+
 Comparison compareImages(const Image8& expected, const Image8& actual, const Tolerance& tolerance);
 
 // Per-pixel largest channel difference, scaled x4 and coloured black -> red -> yellow -> white.

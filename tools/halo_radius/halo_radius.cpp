@@ -2,10 +2,12 @@
 // RMS radius of the bloom texture's luminance around its centroid, in full-resolution pixels:
 // sqrt(sum(Y r^2) / sum(Y)). The bloom is read from the level the final pass reads: level 1 (half
 // resolution, texel centres scaled by 2) after one or more blur passes, level 0 with none.
-// Used by extras/bench_passes.sh on the hot-pixel input (tests/tools/make_test_images).
+// Used by tools/bench_passes/bench_passes.sh on the hot-pixel input (tools/make_test_images).
 // usage: halo_radius DUMP_DIR BLUR_PASSES
 #include "t10/error.hpp"
+#include "t10/contract.hpp"
 #include "t10/image_io.hpp"
+#include "t10/outputs.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -22,7 +24,7 @@ int main(int argc, char** argv) {
         const int level = passes > 0 ? 1 : 0;
         const double scale = passes > 0 ? 2.0 : 1.0; // texel size in full-resolution pixels
         const t10::ImageF bloom =
-            t10::readPfm(std::string(argv[1]) + "/unit17_level" + std::to_string(level) + ".pfm");
+            t10::readPfm(std::string(argv[1]) + "/" + t10::dumpFileName(t10::contract::kBloomUnit, level));
         double sum = 0.0;
         double sumX = 0.0;
         double sumY = 0.0;

@@ -34,13 +34,8 @@ int main(int argc, char** argv) {
         return 2;
     }
 
-    const t10::TgaResult tga = t10::loadTga(argv[1]);
-    if (!tga.ok()) {
-        std::cerr << tga.error << "\n";
-        return 1;
-    }
     try {
-        t10::writePng(argv[2], tga.image);
+        t10::writePng(argv[2], t10::loadTga(argv[1]));
     } catch (const t10::Error& e) {
         std::cerr << e.what() << "\n";
         return 1;

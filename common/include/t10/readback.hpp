@@ -1,0 +1,45 @@
+// Reading GPU images back to the CPU: the default framebuffer and texture levels at once (output
+// files, tests), and a single texel a few frames late without stalling the pipeline (a value a
+// stage shows or checks every frame, such as extras' scene key).
+#pragma once
+#include "t10/gl.hpp"
+#include "t10/image.hpp"
+
+#include <array>
+#include <optional>
+
+namespace t10 {
+
+// Reads the default framebuffer (what the window shows) as 8-bit RGB, bottom row first.
+Image8 readDefaultFramebuffer(int width, int height);
+// Reads one level of a 2D texture as float with 1 or 3 channels (or 4 with rgba = true).
+ImageF readTextureLevel(GLuint texture, int level, bool rgba = false);
+
+// The red channel of a 1x1 texture level (t10::Error for any other size), copied into a pixel buffer with a fence
+// after each request() and read by poll() once the GPU has got there: the value is a few frames
+// old, and no frame waits for it. GL objects are made on the first request(); destroy() deletes
+// them (call it while the context is current: the destructor does no GL).
+class TexelReadback {
+public:
+    TexelReadback() = default;
+    TexelReadback(const TexelReadback&) = delete;
+    TexelReadback& operator=(const TexelReadback&) = delete;
+
+    void request(GLuint texture, int level);
+    // The newest value whose copy has finished since the last poll(), if any.
+    std::optional<float> poll();
+    void destroy();
+
+private:
+    static constexpr int kSlots = 4;
+    struct Slot {
+        GLuint buffer = 0;
+        GLsync fence = nullptr;
+        long serial = 0;
+    };
+    std::array<Slot, kSlots> slots_{};
+    int next_ = 0;
+    long serial_ = 0;
+};
+
+} // namespace t10
