@@ -328,8 +328,15 @@ void Grader::prepareReference() {
 }
 
 std::string Grader::build(const std::string& source, std::string& log) const {
-    const std::string code = readFile(source);
-    const fs::path dir = fs::absolute(config_.cacheDir) / "builds" / hashOf(kit_.text + info_.stage + code);
+    // The key: the code, the recipe, and when each library was last built (a rebuilt common/ must
+    // not leave stale programs in the cache).
+    std::string key = kit_.text + info_.stage + readFile(source);
+    for (const std::string& lib : kit_.libs) {
+        std::error_code error;
+        const auto time = fs::last_write_time(lib, error);
+        if (!error) key += lib + std::to_string(time.time_since_epoch().count());
+    }
+    const fs::path dir = fs::absolute(config_.cacheDir) / "builds" / hashOf(key);
     const std::string program = (dir / "student").string();
     if (fs::exists(program)) {
         log = readFile((dir / "build.log").string());

@@ -24,11 +24,12 @@ int main(int argc, char** argv) {
     if (mode == "--hang" && std::string(argv[2]).find("rgb24_rle_bl.tga") != std::string::npos) {
         for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
     }
-    const t10::TgaResult tga = t10::loadTga(argv[2]);
-    t10::Image8 image = tga.image;
-    if (!tga.ok()) {
+    t10::Image8 image;
+    try {
+        image = t10::loadTga(argv[2]);
+    } catch (const t10::Error& error) {
         if (mode != "--accept") {
-            std::cerr << tga.error << "\n";
+            std::cerr << error.what() << "\n";
             return 1;
         }
         image = t10::Image8(1, 1, 3);
