@@ -43,7 +43,10 @@ endforeach()
 # Step 40: GL_R16F where nothing exceeds Yw (the dim gradient, Yw 1) and in the scene (some pixels do).
 t10_add_extras_dump(extras_dim_r16 --input ${DUMPS}/inputs/dim.exr --white-point 1.0)
 t10_add_extras_dump(extras_dim_r16f --input ${DUMPS}/inputs/dim.exr --white-point 1.0 --luminance-format r16f)
-t10_add_extras_dump(extras_r16f ${SCENE} --luminance-format r16f)
+# At the lamps view, where 3 % of the pixels exceed Yw by up to 2.6 in ln Y (the default view has
+# fewer, and its clamp bias no longer stands clear of the R16F bound, see test_extras.cpp).
+t10_add_extras_dump(extras_r16_lights ${SCENE} --camera lights)
+t10_add_extras_dump(extras_r16f_lights ${SCENE} --camera lights --luminance-format r16f)
 
 # --bench at a small size, its CSV read by the Catch2 test below.
 add_test(NAME "dump: extras_bench"

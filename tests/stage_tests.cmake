@@ -147,6 +147,11 @@ add_test(NAME "cli: a GL error fails the run with its message"
 # --- Backends, window mode, resizes, HDR output (the part0 stage stands for all). -------------
 add_test(NAME "backend: osmesa matches the golden"
          COMMAND ${GOLDEN_TEST} ${BIN} ${OUT}/osmesa ${S0} --backend osmesa)
+# Every frame's line names the key Ya once a stage has a luminance texture (Part 1 on); Part 0 has none.
+add_test(NAME "cli: --verbose prints the key Ya of every frame"
+         COMMAND ${EXPECT} 0 "frame 1: [0-9.]+ ms, key Ya 0\\.0[0-9]+" -- ${BIN}/tutorial10_part1_tonemap ${GOLDEN_ARGS} --frames 2 --verbose)
+add_test(NAME "cli: --verbose prints no key without a luminance texture"
+         COMMAND ${EXPECT} 0 "frame 0: [0-9.]+ ms$" -- ${BIN}/${S0} --backend egl --size 64x36 --frames 1 --verbose)
 add_test(NAME "backend: --verbose reports the renderer"
          COMMAND ${EXPECT} 0 "^renderer: " -- ${BIN}/${S0} ${GOLDEN_ARGS} --verbose)
 add_test(NAME "resize: headless resizes, including 0x0, then matches the golden"

@@ -25,6 +25,9 @@ layout(binding = 2) uniform sampler2D s2DepthMap;   // 0 = top of the surface, 1
 layout(location = 0) uniform float fParallaxScale; // UV units the deepest point lies below the top
 layout(location = 1) uniform float fShininess;
 layout(location = 2) uniform float fSpecular;
+// Light the surface gives off itself (a window's daylight), times its albedo so that the texture's
+// dark joints read as the frame between panes. Black for ordinary surfaces.
+layout(location = 3) uniform vec3 v3Emission;
 
 layout(location = 0) in vec3 v3Position;
 layout(location = 1) in vec3 v3Normal;
@@ -35,7 +38,8 @@ layout(location = 5) flat in vec4 v4UVBounds;
 
 layout(location = 0) out vec4 v4Colour;
 
-const float kAmbient = 0.025f;
+// Dim: the room is lit by its few bright sources, and the corners they do not reach stay near black.
+const float kAmbient = 0.002f;
 // Inverse-square falloff, softened so it stays finite very close to a light.
 const float kFalloffSoftening = 0.05f;
 
@@ -105,7 +109,7 @@ void main() {
     vec3 v3Bumped = normalize(m3TBN * v3MapNormal); // the mapped normal, in world space
 
     // Crevices get less ambient light and are less glossy than the tops.
-    vec3 v3Result = kAmbient * (1.0f - 0.6f * fDepth) * v3Albedo;
+    vec3 v3Result = kAmbient * (1.0f - 0.6f * fDepth) * v3Albedo + v3Emission * v3Albedo;
     float fGloss = fSpecular * (1.0f - 0.8f * fDepth);
     for (int i = 0; i < iLightCount; ++i) {
         vec3 v3ToLight = v4LightPos[i].xyz - v3Position;

@@ -1,6 +1,7 @@
 // The frame loop: context, scene, the stage's callbacks, resizes and rebuilds, GL error checks;
 // input, output files, the benchmark and the UI are services of their own (see app.hpp).
 #include "t10/app.hpp"
+#include "t10/scene_key.hpp"
 
 #include "t10/bench.hpp"
 #include "t10/contract.hpp"
@@ -169,7 +170,11 @@ int App::run() {
         frameTimeMs_ = window ? elapsed * 1000.0 : renderMs;
         checkGlErrors("in frame " + std::to_string(frame));
         times.push_back(renderMs);
-        if (options_.verbose) std::cout << "frame " << frame << ": " << renderMs << " ms\n";
+        if (options_.verbose) {
+            std::cout << "frame " << frame << ": " << renderMs << " ms";
+            if (const auto key = readSceneKey()) std::cout << ", key Ya " << key->ya;
+            std::cout << "\n";
+        }
         if (frames != 0 && frame == frames - 1) {
             writeOutputs(options_, width_, height_, *scene_);
             checkGlErrors("while reading the outputs");

@@ -75,14 +75,16 @@ void Camera::zoom(float steps) {
 const std::vector<CameraPreset>& cameraPresets() {
     // The room spans x [-4.5, 4.5], y [0, 3.5], z [-8, 2]; see scene.cpp for the lights and boxes.
     static const std::vector<CameraPreset> presets{
-        {"default", "Looks into the room: the coloured lights, the brick walls, the tiled floor and the crates",
+        {"default", "Looks into the room: the window, the lamps, the brick walls, the tiled floor and the crates",
          {0.0f, 1.6f, 1.5f}, 0.0f, -6.0f, 60.0f},
         {"floor", "Low grazing view along the tiled floor, where parallax occlusion depth is most visible",
          {-3.2f, 0.35f, 0.8f}, 28.0f, -3.0f, 55.0f},
-        {"lights", "Close to the white light (the brightest pixels) and the blue light by the right wall",
+        {"lights", "Closer to the lamps: the white one, the warm one on the crate, the blue one and the window",
          {1.2f, 1.9f, -1.6f}, 4.0f, -3.0f, 60.0f},
         {"crates", "Three-quarter view of the crates, showing POM edges trimmed at the faces",
          {0.4f, 1.8f, -1.4f}, -12.0f, -19.0f, 55.0f},
+        {"dark", "Turned away from the window and the lamps, towards the unlit end of the room: the exposure opens up",
+         {0.5f, 1.6f, -3.0f}, 172.0f, -4.0f, 60.0f},
     };
     return presets;
 }

@@ -81,7 +81,9 @@ std::unique_ptr<UiHost> makeImGuiHost(GLFWwindow* window) {
 }
 
 void beginPanel(const char* title) {
-    ImGui::SetNextWindowPos(ImVec2(8.0f, 8.0f), ImGuiCond_FirstUseEver);
+    // Bottom left, over the floor: the scene's lamps and window are in the upper half of every
+    // preset's view, and a panel in the corner above would hide the red lamp of the default view.
+    ImGui::SetNextWindowPos(ImVec2(8.0f, ImGui::GetIO().DisplaySize.y - 8.0f), ImGuiCond_FirstUseEver, ImVec2(0.0f, 1.0f));
     ImGui::Begin(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
 }
 

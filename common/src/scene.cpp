@@ -1,7 +1,9 @@
-// The HDR scene every stage renders: a closed brick room with a tiled floor, a timbered ceiling and
-// three wooden crates, all parallax-occlusion and normal mapped, lit per fragment by coloured HDR point
-// lights that are also drawn as emissive cubes. Output goes to the GL_RGBA16F accumulation texture,
-// which stays bound to texture unit 15 for the post-process stages.
+// The HDR scene every stage renders: a dim, closed brick room with a tiled floor, a timbered ceiling
+// and three wooden crates, all parallax-occlusion and normal mapped, lit per fragment by a few HDR
+// point lights: small lamps drawn as very bright emissive cubes, and daylight through a window in
+// the back wall. Luminance spans more than three decades (median about 0.03, sources up to 80).
+// Output goes to the GL_RGBA16F accumulation texture, which stays bound to texture unit 15 for the
+// post-process stages.
 #include "t10/scene.hpp"
 
 #include "t10/error.hpp"
@@ -28,9 +30,20 @@ constexpr GLuint kDepthUnit = 2;
 constexpr GLint kParallaxScaleLocation = 0;
 constexpr GLint kShininessLocation = 1;
 constexpr GLint kSpecularLocation = 2;
+constexpr GLint kEmissionLocation = 3;
 constexpr GLint kLightHalfSizeLocation = 0;
+constexpr GLint kLightRadianceLocation = 1;
 
 constexpr float kLightCubeHalfSize = 0.12f;
+// --- The scene's light (the HDR content; see the light list and the window below). ---------------
+// A lamp cube's surface radiance per unit of the intensity it lights the room with: small sources
+// are far brighter than the light they cast (a 0.24 m cube of intensity 1 shows luminance 60).
+constexpr float kLampRadiancePerIntensity = 40.0f;
+// The window in the back wall: x in [-1.2, 1.2], y in [1.6, 3.1], daylight radiance times the tile
+// texture (its grout reads as the frame between the panes): luminance about 60 on the panes.
+const glm::vec3 kWindowMin{-0.8f, 1.9f, -7.97f};
+const glm::vec2 kWindowSize{1.6f, 1.0f};
+const glm::vec3 kWindowEmission{20.0f, 22.0f, 27.0f};
 
 // The room: x in [-4.5, 4.5], y in [0, 3.5], z in [-8, 2] (the camera presets rely on this).
 constexpr float kRoomMinX = -4.5f;
@@ -139,6 +152,7 @@ struct Scene::Material {
     float parallaxScale;
     float shininess;
     float specular;
+    glm::vec3 emission{0.0f}; // light the surface gives off (times its albedo); only the window
 };
 
 struct Scene::Mesh {
@@ -195,9 +209,12 @@ Scene::Scene(const ShaderManager& shaders, const std::filesystem::path& assetDir
     materials_.push_back(loadMaterial("bricks", kBrickParallax, 24.0f, 0.25f));
     materials_.push_back(loadMaterial("tiles", kTileParallax, 96.0f, 0.6f));
     materials_.push_back(loadMaterial("crate", kCrateParallax, 32.0f, 0.3f));
+    materials_.push_back(loadMaterial("tiles", 0.0f, 1.0f, 0.0f)); // the window: flat, unlit panes
+    materials_.back().emission = kWindowEmission;
     constexpr int kBricks = 0;
     constexpr int kTiles = 1;
     constexpr int kCrate = 2;
+    constexpr int kWindow = 3;
 
     const float w = kRoomMaxX - kRoomMinX;
     const float d = kRoomMaxZ - kRoomMinZ;
@@ -241,20 +258,25 @@ Scene::Scene(const ShaderManager& shaders, const std::filesystem::path& assetDir
     walls.addRoomFace({kRoomMaxX, 0, kRoomMinZ}, {0, 0, d}, {0, h, 0}, kWallMetresPerUv, wallMargin);  // right
     addMesh(walls, kBricks);
 
+    // The window: 4 x 2 panes of the tile texture, facing into the room just in front of the wall.
+    MeshData window;
+    window.addQuad(kWindowMin, {kWindowSize.x, 0, 0}, {0, kWindowSize.y, 0}, {0, 0}, {1.0f, 0.5f}, {0, 0, 1, 0.5f});
+    addMesh(window, kWindow);
+
     MeshData cube;
     cube.addBox({0.0f, -1.0f, 0.0f}, 2.0f, 0.0f, true); // spans [-1, 1]; Light.vert scales it
     addMesh(cube, -1);
 
-    // Linear HDR intensities from 1.5 to 15, as in the LearnOpenGL bloom scene: white high in the
-    // middle of the room, red by the left wall, blue by the right wall, green low over the floor
-    // (grazing light shows the tiles' relief), and a dim warm fill under the ceiling behind the
-    // default view.
+    // A dim room lit by a few small, very bright sources: the daylight through the window (a light
+    // just outside it, its cube hidden by the wall), a white lamp hanging in the middle, a warm lamp
+    // on the big crate, a red lamp by the left wall and a blue one by the right wall. Intensities
+    // are linear HDR; the cubes show kLampRadiancePerIntensity times as much.
     lights_ = {
-        {{0.0f, 2.1f, -3.9f}, {15.0f, 15.0f, 15.0f}},
-        {{-3.6f, 1.2f, -3.0f}, {10.0f, 0.0f, 0.0f}},
-        {{3.4f, 1.9f, -4.6f}, {0.0f, 0.0f, 15.0f}},
-        {{0.6f, 0.9f, -2.4f}, {0.0f, 5.0f, 0.0f}},
-        {{0.0f, 3.2f, 0.5f}, {1.5f, 1.3f, 1.1f}},
+        {{0.0f, 2.4f, -8.15f}, {0.6f, 0.7f, 0.85f}},
+        {{-1.3f, 2.3f, -4.0f}, {2.0f, 2.0f, 2.0f}},
+        {{1.9f, 1.35f, -5.8f}, {2.4f, 1.5f, 0.7f}},
+        {{-4.1f, 1.9f, -3.0f}, {1.2f, 0.15f, 0.08f}},
+        {{4.1f, 2.1f, -4.6f}, {0.1f, 0.25f, 1.4f}},
     };
 
     LightBlock lightBlock{};
@@ -367,12 +389,14 @@ void Scene::render(const Camera& camera) {
         glUniform1f(kParallaxScaleLocation, m.parallaxScale);
         glUniform1f(kShininessLocation, m.shininess);
         glUniform1f(kSpecularLocation, m.specular);
+        glUniform3fv(kEmissionLocation, 1, &m.emission.x);
         glBindVertexArray(mesh.vao.get());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
 
     glUseProgram(lightProgram_.get());
     glUniform1f(kLightHalfSizeLocation, kLightCubeHalfSize);
+    glUniform1f(kLightRadianceLocation, kLampRadiancePerIntensity);
     const auto lightCount = static_cast<GLsizei>(std::min<std::size_t>(lights_.size(), kMaxLights));
     for (const Mesh& mesh : meshes_) {
         if (mesh.material >= 0) continue;

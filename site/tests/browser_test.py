@@ -10,6 +10,7 @@ Checks, in both the light and the dark scheme:
   - every formula rendered: as many KaTeX elements as the HTML has \\( \\) and \\[ \\] formulas, no
     KaTeX error, no raw $$, \\( or \\[ left in the text;
   - every image loaded (complete, natural width > 0; the rendered frames are 1280x720);
+  - nothing makes the page wider than the window (--width 400: captions and code captions wrap);
   - the step numbers the reader sees (CSS counters, read back from the layout) run 1..N in order and
     match the step anchors;
   - every code excerpt has code;
@@ -222,7 +223,7 @@ PAGE_STATE = r"""
     if (/\$\$|\\\(|\\\)|\\\[|\\\]/.test(n.nodeValue)) raw.push(n.nodeValue.trim().slice(0, 80));
   r.rawMath = raw;
   r.images = [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
-    w: i.naturalWidth, h: i.naturalHeight, render: !!i.closest('figure.render')}));
+    w: i.naturalWidth, h: i.naturalHeight, render: !!i.closest('figure.render:not(.derived)')}));
   r.items = [...document.querySelectorAll('.steps > ol:not(#markdown-toc) > li')].map(li => li.id);
   r.excerpts = [...document.querySelectorAll('.content figure.excerpt')].map(f => ({
     step: f.dataset.step, stage: f.dataset.stage, file: f.dataset.file,
@@ -233,6 +234,13 @@ PAGE_STATE = r"""
   r.missing = [...document.querySelectorAll('.excerpt-missing')].map(p => p.dataset.step);
   r.background = getComputedStyle(document.body).backgroundColor;
   r.height = document.documentElement.scrollHeight;
+  r.scrollWidth = document.documentElement.scrollWidth;
+  r.innerWidth = window.innerWidth;
+  // What sticks out past the right edge, outside the boxes that scroll on their own (code, diffs, formulas).
+  r.wide = [...document.querySelectorAll('body *')].filter(e => e.getBoundingClientRect().right > innerWidth + 1
+      && !e.closest('pre, .diff, .katex-display, .katex-mathml, .table-wrap, table'))
+    .slice(0, 5).map(e => e.tagName.toLowerCase() + (e.className ? '.' + String(e.className).split(' ')[0] : '')
+      + ': ' + (e.textContent || '').trim().slice(0, 50));
   return JSON.stringify(r);
 })()
 """
@@ -307,6 +315,9 @@ def check(state, page_html, expected_steps, allow_missing_from, label):
             problems.append(f"image not loaded: {img['src']}")
         elif img["render"] and (img["w"], img["h"]) != (1280, 720):
             problems.append(f"rendered frame {img['src']} is {img['w']}x{img['h']}, not 1280x720")
+    if state["scrollWidth"] > state["innerWidth"] + 1:
+        problems.append(f"the page is {state['scrollWidth']} px wide in a {state['innerWidth']} px window, so it "
+                        f"pans sideways; sticking out: {state['wide']}")
     wanted = [f"step-{n}" for n in range(1, expected_steps + 1)]
     if state["items"] != wanted:
         problems.append(f"step anchors are {state['items']}, expected step-1 .. step-{expected_steps} in order")

@@ -53,7 +53,7 @@ double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode);
 // Applies storeUnsignedFloat to every texel with the R11G11B10F mantissa widths.
 void storeR11G11B10F(ImageF& image, FloatStore mode);
 // Which rule a driver used, judged from a texture it wrote and the exact values it was given:
-// Truncate if no stored value lies clearly above its exact value, RoundToNearest otherwise.
+// RoundToNearest if a quarter or more of the inexact values lie above their exact value, else Truncate.
 FloatStore detectFloatStore(const ImageF& stored, const ImageF& exact);
 
 // Bilinear sample of channel c at texture coordinate (u, v) in [0, 1] with clamp-to-edge.

@@ -34,7 +34,17 @@ import markers  # noqa: E402
 IMAGE_SIZE = "1280x720"
 # Files of site/ that are tooling, not pages.
 NOT_PAGES = {"tools", "tests", "CMakeLists.txt", "README.md", "_site", ".jekyll-cache", "__pycache__"}
-INCLUDE = re.compile(r"\{%-?\s*include\s+(?P<name>excerpt|figure)\.html\s+(?P<args>.*?)\s*-?%\}")
+INCLUDE = re.compile(r"\{%-?\s*include\s+(?P<name>excerpt|figure|derived)\.html\s+(?P<args>.*?)\s*-?%\}")
+# Figures computed from rendered frames by make_figure (tools/figures): name -> (mode, arguments,
+# the renders it reads as (stage, camera, extra)). Crops are of the 1280x720 frames, X Y W H from the
+# top left, enlarged 4 times; heat-maps reach white where a stage adds 128 levels of luma.
+P1, P2, P3 = "tutorial10_part1_tonemap", "tutorial10_part2_bloom", "tutorial10_part3_gaussian"
+DERIVED = {
+    "crop-part1-part2": ("crop", ["736", "270", "120", "80", "4"], [(P1, "", ""), (P2, "", "")]),
+    "crop-part2-part3": ("crop", ["736", "270", "120", "80", "4"], [(P2, "", ""), (P3, "", "")]),
+    "heat-part1-part2": ("heat", ["128"], [(P1, "", ""), (P2, "", "")]),
+    "heat-part2-part3": ("heat", ["128"], [(P2, "", ""), (P3, "", "")]),
+}
 ARG = re.compile(r"""(\w+)=(?:"([^"]*)"|'([^']*)'|(\S+))""")
 # What `jekyll build` prints when all is well; any other line (a warning, a deprecation, a Ruby
 # warning from a gem, a conflict report) fails the build.
@@ -333,6 +343,26 @@ def render_images(renders, bin_dir, images_dir):
         log(f"rendered {os.path.basename(out)} ({time.monotonic() - started:.1f} s)")
 
 
+def make_derived(derived, bin_dir, images_dir):
+    """Writes each derived figure into images_dir; returns {name: {width, height, command}} for the pages."""
+    table = {}
+    for name in sorted(derived):
+        mode, extra, sources = DERIVED[name]
+        out = os.path.join(images_dir, name + ".png")
+        inputs = [os.path.join(images_dir, image_name(*r)) for r in sources]
+        if mode == "crop":
+            cmd = [os.path.join(bin_dir, "make_figure"), "crop", out] + extra + inputs
+        else:
+            cmd = [os.path.join(bin_dir, "make_figure"), "heat", out] + extra + inputs
+        run(cmd)
+        with open(out, "rb") as f:
+            head = f.read(24)  # PNG: the IHDR chunk holds width and height at bytes 16-23
+        table[name] = {"width": int.from_bytes(head[16:20], "big"), "height": int.from_bytes(head[20:24], "big"),
+                       "command": " ".join(["make_figure", mode] + extra + [image_name(*r) for r in sources])}
+        log(f"derived {name}.png")
+    return table
+
+
 def slugify(text):
     """Jekyll's default `slugify`: lower case, runs of anything but letters and digits to '-'."""
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
@@ -409,11 +439,21 @@ def page_includes(work):
 
 
 def check_includes(includes, excerpts, steps, stage_names):
-    renders, problems = set(), []
+    renders, derived, problems = set(), set(), []
     for page, line, name, args in includes:
         where = f"site/{page}:{line}"
         optional = args.get("optional") == "true"
         stage = args.get("stage")
+        if name == "derived":
+            image = args.get("image", "")
+            if image not in DERIVED:
+                problems.append(f"{where}: no derived figure '{image}' (build_site.py DERIVED: {', '.join(DERIVED)})")
+            elif all(r[0] in stage_names for r in DERIVED[image][2]):
+                derived.add(image)
+                renders.update(DERIVED[image][2])
+            elif not optional:
+                problems.append(f"{where}: derived figure '{image}' needs a stage that does not exist")
+            continue
         if name == "figure":
             if not stage and args.get("step", "") in steps:
                 stage = steps[args["step"]]["stage"]
@@ -445,7 +485,7 @@ def check_includes(includes, excerpts, steps, stage_names):
             problems.append(f"{where}: {stage}/{file or '*'} has no [step {step}] marker")
     if problems:
         raise SiteError("the pages ask for code or images that do not exist:\n  " + "\n  ".join(problems))
-    return renders
+    return renders, derived
 
 
 # --- KaTeX --------------------------------------------------------------------------------------
@@ -544,7 +584,7 @@ def main():
         f"{sum(len(b['blocks']) for s in excerpts.values() for f in s.values() for b in f.values())} blocks")
 
     # 3. Every excerpt and figure the pages ask for must exist.
-    renders = check_includes(page_includes(work), excerpts, steps, names)
+    renders, derived = check_includes(page_includes(work), excerpts, steps, names)
     renders |= {(n, "", "") for n in names}  # the home page shows every stage
 
     # 4. Binaries: --help and the images (or an earlier build's, for the tests).
@@ -556,11 +596,17 @@ def main():
         for render in renders:
             shutil.copyfile(os.path.join(args.reuse, "assets", "images", image_name(*render)),
                             os.path.join(images, image_name(*render)))
+        with open(os.path.join(args.reuse, "_data", "derived.json"), encoding="utf-8") as f:
+            generated["derived.json"] = {k: v for k, v in json.load(f).items() if k in derived}
+        for name in derived:
+            shutil.copyfile(os.path.join(args.reuse, "assets", "images", name + ".png"),
+                            os.path.join(images, name + ".png"))
     else:
         if not args.bin:
             raise SiteError("--bin is required (or --reuse)")
         generated["cli.json"] = cli_help(stages, os.path.abspath(args.bin))
         render_images(renders, os.path.abspath(args.bin), images)
+        generated["derived.json"] = make_derived(derived, os.path.abspath(args.bin), images)
 
     for name, value in generated.items():
         with open(os.path.join(data, name), "w", encoding="utf-8") as f:

@@ -96,6 +96,28 @@ def parse(text, where):
     return lines, blocks
 
 
+_SENTENCE_END = re.compile(r"^(.*?[.!?])(?:\s|$)")
+# A comment line this long was wrapped by its author: its sentence goes on in the next line.
+_WRAPPED = 90
+
+
+def _first_sentence(block, lines):
+    """The marker's title for a folded '... step N: title' line: where the marker's line was wrapped
+    mid-sentence, read on into the comment lines under it, and keep the first sentence, so that the
+    folded line never breaks off mid-sentence."""
+    title = block.title or ""
+    line, i = lines[block.start], block.start + 1
+    while title and not _SENTENCE_END.match(title) and len(line.rstrip()) >= _WRAPPED and i < block.end:
+        line = lines[i]
+        text = line.strip()
+        if not text.startswith(block.comment) or "[step" in text or "[/step" in text:
+            break
+        title += " " + text[len(block.comment):].strip()
+        i += 1
+    m = _SENTENCE_END.match(title)
+    return m.group(1) if m else title
+
+
 def _render(block, lines, out):
     if block.title:
         out.append(f"{block.indent}{block.comment} {block.title}")
@@ -111,7 +133,8 @@ def _render(block, lines, out):
             i = child.end + 1
         else:
             # Another step's code inside this one: the page shows it at that step.
-            note = f": {child.title}" if child.title else ""
+            title = _first_sentence(child, lines)
+            note = f": {title}" if title else ""
             out.append(f"{child.indent}{child.comment} ... step {child.step}{note}")
             i = child.end + 1
 

@@ -1,0 +1,47 @@
+# The teaching test: what each part does to the picture (tests/teaching/test_teaching.cpp).
+# Included from tests/CMakeLists.txt, which has set BIN, DUMPS and EXPECT.
+# Every stage renders the golden size at the camera presets the test measures; Part 0 also writes
+# the EXR.
+set(TEACHING_DUMPS ${DUMPS}/teaching)
+add_executable(t10_teaching_tests teaching/test_teaching.cpp)
+target_link_libraries(t10_teaching_tests PRIVATE t10_reference t10_flags Catch2::Catch2WithMain)
+
+# "dark" shows no source: Parts 0 and 1 are enough for the exposure check.
+foreach(preset default lights dark)
+    set(parts part0_start part1_tonemap part2_bloom part3_gaussian)
+    if(preset STREQUAL "dark")
+        set(parts part0_start part1_tonemap)
+    endif()
+    foreach(part IN LISTS parts)
+        string(REGEX MATCH "^part[0-9]" short ${part})
+        set(dir ${TEACHING_DUMPS}/${short}_${preset})
+        set(exr "")
+        if(short STREQUAL "part0")
+            set(exr --exr ${dir}/scene.exr)
+        endif()
+        add_test(NAME "dump: teaching ${short} ${preset}"
+                 COMMAND ${BIN}/tutorial10_${part} --headless --backend egl --frames 1 --size 640x360
+                         --camera ${preset} --dump ${dir} --output ${dir}/frame.png ${exr})
+        set_tests_properties("dump: teaching ${short} ${preset}" PROPERTIES FIXTURES_SETUP teaching_dumps)
+    endforeach()
+endforeach()
+
+catch_discover_tests(t10_teaching_tests TEST_PREFIX "teaching: "
+                     PROPERTIES FIXTURES_REQUIRED teaching_dumps ENVIRONMENT T10_DUMP_DIR=${TEACHING_DUMPS})
+
+# The checks fail on the wrong stage's picture: each stage's frame posing as the next one's must
+# fail the check that describes the next part, at that check.
+# t10_add_teaching_reject(<stage shown> <stage claimed> <test case> <failing check regex>)
+function(t10_add_teaching_reject shown claimed testcase check)
+    add_test(NAME "teaching rejects: ${shown} posing as ${claimed}"
+             COMMAND ${EXPECT} nonzero "${check}" -- ${CMAKE_COMMAND} -E env T10_DUMP_DIR=${TEACHING_DUMPS}
+                     T10_TEACHING_POSE=${shown}:${claimed} $<TARGET_FILE:t10_teaching_tests> "${testcase}")
+    set_tests_properties("teaching rejects: ${shown} posing as ${claimed}" PROPERTIES FIXTURES_REQUIRED teaching_dumps)
+endfunction()
+
+t10_add_teaching_reject(part0 part1 "Part 1 lifts the dark pixels and the darker view more"
+                        "CHECK\\( lifts.back\\(\\) >= 1.5 \\)")
+t10_add_teaching_reject(part1 part2 "Part 2 adds light around the sources and Part 3 spreads it twice as far"
+                        "CHECK\\( bloom.bandMean >= 3.0 \\)")
+t10_add_teaching_reject(part2 part3 "Part 2 adds light around the sources and Part 3 spreads it twice as far"
+                        "CHECK\\( blur.rmsDistance >= 2.0 \\* bloom.rmsDistance \\)")
