@@ -29,6 +29,8 @@ help:
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
+	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
+	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make help   this list"
 
 deps:

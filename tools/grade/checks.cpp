@@ -86,24 +86,32 @@ std::string format(double value, int precision = 4) {
     return text.str();
 }
 
-// Picks the model that best explains a failed measurement: one within the check's tolerance, or
-// failing that one whose error is under a quarter of the correct chain's (a clearly better fit).
+// Names the models that explain a failed measurement: every one within the check's tolerance (a
+// scene may not tell two mistakes apart), or failing that the closest one if its error is under a
+// quarter of the correct chain's (a clearly better fit).
 template <typename Model>
 std::string diagnose(const std::vector<Model>& models, const std::function<double(const Model&)>& error,
                      const std::function<bool(double)>& withinTolerance, double correctError,
                      const std::string& fallback) {
+    std::string matches;
+    std::vector<std::string> named;
     const Model* best = nullptr;
     double bestError = 0.0;
     for (const Model& model : models) {
         const double e = error(model);
+        if (withinTolerance(e) && std::find(named.begin(), named.end(), model.mistake->id) == named.end()) {
+            named.push_back(model.mistake->id);
+            matches += std::string(matches.empty() ? "" : "; or ") + "[" + model.mistake->id + "]: " + model.mistake->text;
+        }
         if (best == nullptr || e < bestError) {
             best = &model;
             bestError = e;
         }
     }
-    if (best != nullptr && (withinTolerance(bestError) || bestError < 0.25 * correctError)) {
+    if (!matches.empty()) return "likely mistake " + matches;
+    if (best != nullptr && bestError < 0.25 * correctError) {
         return std::string("likely mistake [") + best->mistake->id + "]: " + best->mistake->text +
-               (withinTolerance(bestError) ? "" : " (closest known mistake, not an exact match)");
+               " (closest known mistake, not an exact match)";
     }
     return fallback;
 }
@@ -411,13 +419,16 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             return ref::toUnorm16(ref::rangeMappedLogLuminance(ref::luminance(c)));
         });
         // The GPU's float log differs from the double one by about 1e-7 of the mapped range, far below
-        // one R16 step (1.5e-5): a texel can only round to the neighbouring step. The read-back float
-        // (value / 65535) adds about 0.001 of a step.
-        constexpr double kSteps = 1.01;
+        // one R16 step (1.5e-5), so a texel rounds at most to the neighbouring step. At sizes that are
+        // not a power of two gl_FragCoord x 1 / size lands a hair off the texel centre, and beside a
+        // lamp 1e-6 of its light moves a dark texel's log: 2 steps measured at 160x90. A wrong weight,
+        // base or bound moves texels by hundreds of steps.
+        constexpr double kSteps = 4.0;
         check.passed = worst <= kSteps;
         check.measured = "largest difference " + format(worst) + " R16 steps over " + std::to_string(acc.width) + "x" +
                          std::to_string(acc.height) + " pixels";
-        check.tolerance = "<= 1.01 R16 steps: float vs double log rounds at most to the neighbouring step";
+        check.tolerance = "<= 4 R16 steps: float vs double rounding, and off-centre sampling beside bright "
+                          "pixels (2 measured); a wrong weight or base is hundreds of steps off";
         if (!check.passed) {
             const std::vector<KeyModel> models{{&kRec601, kRec601Weights}, {&kWhitePoint, kRec709Weights, 0.25},
                                                {&kLog2Pass, kRec709Weights, ref::kYwhite, true}};
