@@ -9,7 +9,7 @@ JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages the build, the tests and the headless renders need.
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libimgui-dev xvfb xauth \
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev xvfb xauth \
             jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
@@ -27,6 +27,8 @@ help:
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
+	@echo "make fuzz-gltf  fuzz the glTF loader (clang, ASan, UBSan) for FUZZ_GLTF_SECONDS (default 60)"
+	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
@@ -89,6 +91,27 @@ site: configure
 site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+
+# The glTF loader's fuzzer (fuzz/gltf/): clang, ASan and UBSan into $(BUILD)/fuzz-gltf/, seeded with the
+# loader's test fixtures, run for FUZZ_GLTF_SECONDS (default 60; the loader was run for 1800 before it
+# was called done). Not part of `make test`.
+.PHONY: fuzz-gltf
+FUZZ_GLTF_SECONDS ?= 60
+fuzz-gltf: PACKAGES += clang libclang-rt-14-dev
+fuzz-gltf: build
+	@[ -f $(BUILD)/fuzz-gltf/build.ninja ] || CXX=clang++ cmake -S fuzz/gltf -B $(BUILD)/fuzz-gltf -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build $(BUILD)/fuzz-gltf -j $(JOBS)
+	$(BIN)/make_gltf_fixtures $(BUILD)/fuzz-gltf/fixtures >/dev/null
+	fuzz/gltf/run.sh $(BUILD)/fuzz-gltf $(BUILD)/fuzz-gltf/fixtures $(FUZZ_GLTF_SECONDS)
+
+# The glTF loader's speed: a generated scene of about one million triangles loaded by a release build
+# (tools/bench_gltf_load; not a test). The loader must stay under 2 s on the 2-core CI machine.
+.PHONY: bench-gltf
+bench-gltf: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
+	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
+	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
 
 # Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
 # [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian

@@ -107,7 +107,7 @@ foreach(case
         "--size;20000x10;each side must be from 2 to 16384"
         "--frames;0;--frames"
         "--frames;abc;--frames"
-        "--camera;nowhere;unknown preset"
+        "--camera;nowhere;unknown camera"
         "--backend;vulkan;--backend"
         "--output;frame.jpg;must end in .png"
         "--exr;frame.png;must end in .exr"

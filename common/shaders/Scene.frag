@@ -1,7 +1,8 @@
 // Scene surfaces: parallax occlusion mapping (a layered search through the depth map with linear
-// interpolation between the last two layers), tangent-space normal mapping and per-fragment
-// Blinn-Phong lighting from the HDR point lights. Writes linear HDR colour (values far above 1 near
-// the lights) into the GL_RGBA16F accumulation texture.
+// interpolation between the last two layers), tangent-space normal mapping, per-fragment
+// Blinn-Phong lighting from the HDR point and spot lights, and emission (glTF emissive factor x
+// KHR_materials_emissive_strength: the light cubes and any bright source of a --scene file). Writes
+// linear HDR colour (values far above 1 near the lights) into the GL_RGBA16F accumulation texture.
 #version 430 core
 
 const int kMaxLights = 8; // must match Scene's kMaxLights on the host
@@ -14,20 +15,25 @@ layout(std140, binding = 0) uniform Camera {
 
 layout(std140, binding = 1) uniform Lights {
     vec4 v4LightPos[kMaxLights];    // xyz: world position
-    vec4 v4LightColour[kMaxLights]; // rgb: linear HDR intensity
+    vec4 v4LightColour[kMaxLights]; // rgb: linear HDR intensity (candela for a glTF light)
+    vec4 v4LightSpot[kMaxLights];   // xyz: spot direction, w: cos(outer cone angle); -2 = point light
+    vec4 v4LightCone[kMaxLights];   // x: cos(inner cone angle), y: 1 / range (0 = unlimited)
     int iLightCount;
 };
 
-layout(binding = 0) uniform sampler2D s2DiffuseMap; // sRGB texture: reads back linear
-layout(binding = 1) uniform sampler2D s2NormalMap;  // tangent space, +y along +v
-layout(binding = 2) uniform sampler2D s2DepthMap;   // 0 = top of the surface, 1 = deepest
+layout(binding = 0) uniform sampler2D s2DiffuseMap;  // sRGB texture: reads back linear
+layout(binding = 1) uniform sampler2D s2NormalMap;   // tangent space, +y along +v
+layout(binding = 2) uniform sampler2D s2DepthMap;    // 0 = top of the surface, 1 = deepest
+layout(binding = 3) uniform sampler2D s2EmissiveMap; // sRGB texture
 
 layout(location = 0) uniform float fParallaxScale; // UV units the deepest point lies below the top
 layout(location = 1) uniform float fShininess;
 layout(location = 2) uniform float fSpecular;
-// Light the surface gives off itself (a window's daylight), times its albedo so that the texture's
-// dark joints read as the frame between panes. Black for ordinary surfaces.
-layout(location = 3) uniform vec3 v3Emission;
+layout(location = 3) uniform vec4 v4BaseColour;    // multiplies the diffuse map (glTF baseColorFactor)
+layout(location = 4) uniform vec3 v3Emissive;      // multiplies the emissive map, linear HDR
+layout(location = 5) uniform int iAlphaMode;       // 0 opaque, 1 mask, 2 blend
+layout(location = 6) uniform float fAlphaCutoff;   // mask: fragments below it are discarded
+layout(location = 7) uniform float fNormalScale;   // scales the normal map's x and y
 
 layout(location = 0) in vec3 v3Position;
 layout(location = 1) in vec3 v3Normal;
@@ -88,6 +94,13 @@ void main() {
     vec3 v3N = normalize(v3Normal);
     vec3 v3T = normalize(v3Tangent);
     vec3 v3B = normalize(v3Bitangent);
+    // A double-sided surface seen from behind is lit as the side the camera sees (single-sided
+    // ones are culled before they get here).
+    if (!gl_FrontFacing) {
+        v3N = -v3N;
+        v3T = -v3T;
+        v3B = -v3B;
+    }
     mat3 m3TBN = mat3(v3T, v3B, v3N); // tangent space -> world space
 
     vec3 v3ToEye = v4CameraPos.xyz - v3Position;
@@ -100,22 +113,36 @@ void main() {
     // Trim fragments whose displaced coordinate leaves this face's UV rectangle, so edges show
     // depth instead of the texture wrapping around. The bounds are per face: room faces tile the
     // texture across the whole face, which reaches a little past the room's corners (see
-    // scene.cpp), and crate faces span [0, 1].
+    // tools/make_scene), and crate faces span [0, 1].
     if (any(lessThan(v2TexCoord, v4UVBounds.xy)) || any(greaterThan(v2TexCoord, v4UVBounds.zw))) discard;
     float fDepth = v3Parallax.z;
 
-    vec3 v3Albedo = textureGrad(s2DiffuseMap, v2TexCoord, v2Dx, v2Dy).rgb;
+    vec4 v4Albedo = textureGrad(s2DiffuseMap, v2TexCoord, v2Dx, v2Dy) * v4BaseColour;
+    if (iAlphaMode == 1 && v4Albedo.a < fAlphaCutoff) discard;
+    vec3 v3Albedo = v4Albedo.rgb;
     vec3 v3MapNormal = textureGrad(s2NormalMap, v2TexCoord, v2Dx, v2Dy).xyz * 2.0f - 1.0f;
+    v3MapNormal.xy *= fNormalScale;
     vec3 v3Bumped = normalize(m3TBN * v3MapNormal); // the mapped normal, in world space
 
     // Crevices get less ambient light and are less glossy than the tops.
-    vec3 v3Result = kAmbient * (1.0f - 0.6f * fDepth) * v3Albedo + v3Emission * v3Albedo;
+    vec3 v3Result = kAmbient * (1.0f - 0.6f * fDepth) * v3Albedo;
     float fGloss = fSpecular * (1.0f - 0.8f * fDepth);
     for (int i = 0; i < iLightCount; ++i) {
         vec3 v3ToLight = v4LightPos[i].xyz - v3Position;
         float fDistance2 = dot(v3ToLight, v3ToLight);
         vec3 v3L = v3ToLight * inversesqrt(fDistance2);
         vec3 v3Radiance = v4LightColour[i].rgb / (fDistance2 + kFalloffSoftening);
+        if (v4LightCone[i].y > 0.0f) {
+            // glTF's range: a smooth window that reaches zero at the range.
+            float fRatio = sqrt(fDistance2) * v4LightCone[i].y;
+            v3Radiance *= pow(clamp(1.0f - pow(fRatio, 4.0f), 0.0f, 1.0f), 2.0f);
+        }
+        if (v4LightSpot[i].w > -1.5f) {
+            // Spot cone: full inside the inner angle, none outside the outer, smooth between.
+            float fCos = dot(-v3L, v4LightSpot[i].xyz);
+            float fCone = clamp((fCos - v4LightSpot[i].w) / max(v4LightCone[i].x - v4LightSpot[i].w, 1e-4f), 0.0f, 1.0f);
+            v3Radiance *= fCone * fCone;
+        }
         // Lights behind the face itself do not reach it, whatever the mapped normal says.
         float fFacing = smoothstep(-0.05f, 0.15f, dot(v3N, v3L));
 
@@ -124,5 +151,6 @@ void main() {
         float fSpec = pow(max(dot(v3Bumped, v3H), 0.0f), fShininess) * fGloss;
         v3Result += fFacing * v3Radiance * (fDiffuse * v3Albedo + fSpec);
     }
-    v4Colour = vec4(v3Result, 1.0f);
+    v3Result += v3Emissive * textureGrad(s2EmissiveMap, v2TexCoord, v2Dx, v2Dy).rgb;
+    v4Colour = vec4(v3Result, iAlphaMode == 2 ? v4Albedo.a : 1.0f);
 }

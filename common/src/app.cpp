@@ -47,7 +47,7 @@ std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const Op
 
 App::App(const Stage& stage, const Options& options, Context& context)
     : stage_(stage), options_(options), context_(context), shaders_(shaderSearchPath(stage, options)),
-      camera_(*findCameraPreset(options.camera)), glErrors_(std::make_unique<GlErrorLog>()) {
+      glErrors_(std::make_unique<GlErrorLog>()) {
     glErrors_->installDebugCallback();
     if (options_.verbose) {
         std::cout << "backend:  " << context_.description() << "\n"
@@ -56,7 +56,7 @@ App::App(const Stage& stage, const Options& options, Context& context)
                   << "version:  " << glString(GL_VERSION) << "\n";
     }
     quad_ = std::make_unique<FullScreenQuad>();
-    scene_ = std::make_unique<Scene>(shaders_, T10_ASSET_DIR);
+    loadScene();
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
         ImageF image = readExr(options_.input);
@@ -78,6 +78,26 @@ App::App(const Stage& stage, const Options& options, Context& context)
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
     }
     if (stage_.timers != nullptr) stage_.timers->create();
+}
+
+void App::loadScene() {
+    const std::string file = options_.scene.empty() ? builtInScenePath() : options_.scene;
+    const auto start = Clock::now();
+    const SceneDescription description = loadGltfScene(file);
+    const double loadMs = secondsSince(start) * 1000.0;
+    for (const std::string& warning : description.warnings) std::cerr << "warning: " << file << ": " << warning << "\n";
+    const CameraPreset* preset =
+        options_.camera.empty() ? &description.cameras.front() : description.findCamera(options_.camera);
+    if (preset == nullptr)
+        throw UsageError("--camera " + options_.camera + ": unknown camera (" + file + " has " +
+                         description.cameraNames() + ")");
+    camera_ = Camera(*preset);
+    scene_ = std::make_unique<Scene>(shaders_, description);
+    if (options_.verbose) {
+        std::cout << "scene:    " << file << ": " << description.triangleCount << " triangles, "
+                  << description.materials.size() << " materials, " << description.lights.size()
+                  << (description.defaultLights ? " default" : "") << " lights, loaded in " << loadMs << " ms\n";
+    }
 }
 
 App::~App() {

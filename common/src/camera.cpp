@@ -1,5 +1,5 @@
 // First-person camera maths (yaw/pitch angles, right-handed view and projection matrices) and the
-// named presets that headless renders, golden images and `--camera NAME` use.
+// start from a scene camera (`--camera NAME`).
 #include "t10/camera.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -29,7 +29,9 @@ Camera::Camera(const CameraPreset& preset)
     : position_(preset.position),
       yaw_(preset.yawDegrees),
       pitch_(clampPitch(preset.pitchDegrees)),
-      fov_(clampFov(preset.fovDegrees)) {}
+      fov_(clampFov(preset.fovDegrees)),
+      near_(preset.nearPlane),
+      far_(preset.farPlane) {}
 
 glm::vec3 Camera::forward() const {
     const float yaw = glm::radians(yaw_);
@@ -49,7 +51,7 @@ glm::mat4 Camera::view() const {
 }
 
 glm::mat4 Camera::projection(float aspect) const {
-    return glm::perspective(glm::radians(fov_), aspect, kNear, kFar);
+    return glm::perspective(glm::radians(fov_), aspect, near_, far_);
 }
 
 void Camera::move(const glm::vec3& delta) {
@@ -72,29 +74,10 @@ void Camera::zoom(float steps) {
     fov_ = clampFov(fov_ - steps * kFovDegreesPerStep);
 }
 
-const std::vector<CameraPreset>& cameraPresets() {
-    // The room spans x [-4.5, 4.5], y [0, 3.5], z [-8, 2]; see scene.cpp for the lights and boxes.
-    static const std::vector<CameraPreset> presets{
-        {"default", "Looks into the room: the window, the lamps, the brick walls, the tiled floor and the crates",
-         {0.0f, 1.6f, 1.5f}, 0.0f, -6.0f, 60.0f},
-        {"floor", "Low grazing view along the tiled floor, where parallax occlusion depth is most visible",
-         {-3.2f, 0.35f, 0.8f}, 28.0f, -3.0f, 55.0f},
-        {"lights", "Closer to the lamps: the white one, the warm one on the crate, the blue one and the window",
-         {1.2f, 1.9f, -1.6f}, 4.0f, -3.0f, 60.0f},
-        {"crates", "Three-quarter view of the crates, showing POM edges trimmed at the faces",
-         {0.4f, 1.8f, -1.4f}, -12.0f, -19.0f, 55.0f},
-        {"dark", "Turned away from the window and the lamps, towards the unlit end of the room: the exposure opens up",
-         {0.5f, 1.6f, -3.0f}, 172.0f, -4.0f, 60.0f},
-    };
-    return presets;
-}
-
-std::optional<CameraPreset> findCameraPreset(const std::string& name) {
-    const auto& presets = cameraPresets();
-    const auto it = std::find_if(presets.begin(), presets.end(),
-                                 [&](const CameraPreset& p) { return p.name == name; });
-    if (it == presets.end()) return std::nullopt;
-    return *it;
+glm::vec2 yawPitchOf(const glm::vec3& forward) {
+    const glm::vec3 f = glm::normalize(forward);
+    // The inverse of Camera::forward(): yaw from the horizontal part, pitch from the height.
+    return {glm::degrees(std::atan2(f.x, -f.z)), glm::degrees(std::asin(std::clamp(f.y, -1.0f, 1.0f)))};
 }
 
 } // namespace t10

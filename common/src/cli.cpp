@@ -5,7 +5,6 @@
 #include "t10/bench.hpp"
 #include "t10/cli_range.hpp"
 
-#include "t10/camera.hpp"
 #include "t10/error.hpp"
 
 #include <CLI/CLI.hpp>
@@ -22,15 +21,6 @@ bool endsWith(const std::string& text, const std::string& suffix) {
     std::string tail = text.substr(text.size() - suffix.size());
     for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return tail == suffix;
-}
-
-std::string presetList() {
-    std::string names;
-    for (const CameraPreset& preset : cameraPresets()) {
-        names += names.empty() ? "" : ", ";
-        names += preset.name;
-    }
-    return names;
 }
 
 } // namespace
@@ -72,7 +62,9 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         ->check(CLI::Range(1, 1000000));
     app.add_option("--output", options.output, "Write the final frame as an 8-bit PNG (exactly what the window shows)");
     app.add_option("--exr", options.exr, "Write the HDR accumulation buffer as an OpenEXR file (RGBA half)");
-    app.add_option("--camera", options.camera, "Camera preset: " + presetList() + " (default: default)");
+    app.add_option("--camera", options.camera, "A camera of the scene (built-in: default, floor, lights, crates; "
+                                               "any scene: framing; default: the scene's first)");
+    app.add_option("--scene", options.scene, "Render this glTF 2.0 file (.gltf or .glb) instead of the built-in scene");
     app.add_option("--shader-dir", options.shaderDir, "Look for shaders in DIR before the stage's own folder")
         ->check(CLI::ExistingDirectory);
     app.add_option("--input", options.input, "Post-process this HDR image (OpenEXR) instead of rendering the scene")
@@ -111,8 +103,8 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         if (!options.exr.empty() && !endsWith(options.exr, ".exr")) {
             throw UsageError("--exr " + options.exr + ": the file name must end in .exr");
         }
-        if (!findCameraPreset(options.camera)) {
-            throw UsageError("--camera " + options.camera + ": unknown preset (choose from " + presetList() + ")");
+        if (!options.scene.empty() && !endsWith(options.scene, ".gltf") && !endsWith(options.scene, ".glb")) {
+            throw UsageError("--scene " + options.scene + ": the file name must end in .gltf or .glb");
         }
         if (!resizeSequence.empty()) {
             std::stringstream list(resizeSequence);

@@ -1,4 +1,5 @@
-// Uploads 8-bit images as immutable, fully mip-mapped, trilinear, repeating 2D textures.
+// Uploads 8-bit images as immutable, fully mip-mapped 2D textures (trilinear and repeating unless
+// the caller's sampling says otherwise).
 #include "t10/texture.hpp"
 
 #include "t10/error.hpp"
@@ -39,7 +40,7 @@ Formats formatsFor(int channels, bool srgb) {
 
 } // namespace
 
-Texture uploadTexture(const Image8& image, bool srgb) {
+Texture uploadTexture(const Image8& image, bool srgb, const TextureSampling& sampling) {
     if (image.width < 1 || image.height < 1 || image.empty())
         throw Error("uploadTexture: empty image");
     const Formats f = formatsFor(image.channels, srgb);
@@ -62,10 +63,10 @@ Texture uploadTexture(const Image8& image, bool srgb) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, previousAlignment);
 
     glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, sampling.minFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, sampling.magFilter);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, sampling.wrapS);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, sampling.wrapT);
     if (image.channels == 1) {
         // Sampling a grey texture gives (g, g, g, 1), not (g, 0, 0, 1).
         const GLint swizzle[4] = {GL_RED, GL_RED, GL_RED, GL_ONE};

@@ -142,31 +142,14 @@ TEST_CASE("projection uses the vertical field of view and the aspect ratio", "[c
     CHECK(farPoint.z / farPoint.w == Approx(1.0).margin(1e-4));
 }
 
-TEST_CASE("camera presets: default first, unique names, all findable", "[camera]") {
-    const auto& presets = t10::cameraPresets();
-    REQUIRE(presets.size() >= 3);
-    CHECK(presets.front().name == "default");
-
-    std::set<std::string> names;
-    for (const t10::CameraPreset& p : presets) {
-        INFO("preset " << p.name);
-        CHECK(names.insert(p.name).second);
-        CHECK_FALSE(p.description.empty());
-        CHECK(p.description.find('\n') == std::string::npos); // one line each
-        CHECK(std::abs(p.pitchDegrees) <= t10::Camera::kMaxPitch);
-        CHECK(p.fovDegrees >= t10::Camera::kMinFov);
-        CHECK(p.fovDegrees <= t10::Camera::kMaxFov);
-        const auto found = t10::findCameraPreset(p.name);
-        REQUIRE(found.has_value());
-        CHECK(found->name == p.name);
-        CHECK(found->position == p.position);
+TEST_CASE("yawPitchOf inverts Camera::forward", "[camera]") {
+    for (const float yaw : {0.0f, 37.0f, -120.0f, 179.0f}) {
+        for (const float pitch : {0.0f, -6.0f, 45.0f, -80.0f}) {
+            const t10::Camera camera(preset({0, 0, 0}, yaw, pitch, 60.0f));
+            const glm::vec2 yp = t10::yawPitchOf(camera.forward());
+            INFO("yaw " << yaw << " pitch " << pitch);
+            CHECK(yp.x == Approx(yaw).margin(1e-3));
+            CHECK(yp.y == Approx(pitch).margin(1e-3));
+        }
     }
-    CHECK(names.count("floor") == 1);
-    CHECK(names.count("lights") == 1);
-}
-
-TEST_CASE("an unknown preset name gives nullopt", "[camera]") {
-    CHECK_FALSE(t10::findCameraPreset("no-such-camera").has_value());
-    CHECK_FALSE(t10::findCameraPreset("").has_value());
-    CHECK_FALSE(t10::findCameraPreset("Default").has_value()); // names are case-sensitive
 }

@@ -30,13 +30,14 @@ TEST_CASE("parseSize rejects malformed and out-of-range sizes", "[cli]") {
     }
 }
 
-TEST_CASE("defaults: auto backend, 1280x720, default camera", "[cli]") {
+TEST_CASE("defaults: auto backend, 1280x720, the scene's first camera", "[cli]") {
     t10::Options options;
     REQUIRE(parse({}, options) == -1);
     CHECK(options.backend == t10::Backend::Auto);
     CHECK(options.width == 1280);
     CHECK(options.height == 720);
-    CHECK(options.camera == "default");
+    CHECK(options.camera.empty()); // the scene's first camera (checked once the scene is loaded)
+    CHECK(options.scene.empty());  // the built-in scene
     CHECK(options.frames == 0);
     CHECK_FALSE(options.headless);
 }
@@ -54,6 +55,9 @@ TEST_CASE("options are parsed into Options", "[cli]") {
     CHECK(options.frames == 3);
     CHECK(options.output == "a.png");
     CHECK(options.exr == "a.exr");
+    REQUIRE(parse({"--scene", "room.GLB", "--camera", "top"}, options) == -1);
+    CHECK(options.scene == "room.GLB");
+    CHECK(options.camera == "top");
     REQUIRE(options.resizeSequence.size() == 3);
     CHECK(options.resizeSequence[1] == std::pair<int, int>(0, 0));
 }
@@ -64,7 +68,7 @@ TEST_CASE("help and version exit 0, bad usage exits 2", "[cli]") {
     CHECK(parse({"--version"}, options) == 0);
     CHECK(parse({"--frames", "0"}, options) == 2);
     CHECK(parse({"--size", "10"}, options) == 2);
-    CHECK(parse({"--camera", "nowhere"}, options) == 2);
+    CHECK(parse({"--scene", "model.obj"}, options) == 2);
     CHECK(parse({"--output", "x.bmp"}, options) == 2);
     CHECK(parse({"--headless", "--backend", "window"}, options) == 2);
     CHECK(parse({"stray"}, options) == 2);

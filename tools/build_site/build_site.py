@@ -296,10 +296,10 @@ def stage_diffs(stages):
 
 # --- Binaries -----------------------------------------------------------------------------------
 
-def run(cmd, timeout=60):
+def run(cmd, timeout=60, cwd=None):
     try:
         result = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                timeout=timeout)
+                                timeout=timeout, cwd=cwd)
     except FileNotFoundError:
         raise SiteError(f"{cmd[0]}: not found (build the stages first: cmake --build build)")
     except subprocess.TimeoutExpired:
@@ -327,7 +327,8 @@ def cli_help(stages, bin_dir):
     return {"groups": groups, "last": stages[-1]["name"]}
 
 
-def render_images(renders, bin_dir, images_dir):
+def render_images(renders, bin_dir, images_dir, source_root=None):
+    """Renders run in the source root, so a figure's args can name files of the repository."""
     os.makedirs(images_dir, exist_ok=True)
     for stage, camera, extra in sorted(renders):
         out = os.path.join(images_dir, image_name(stage, camera, extra))
@@ -337,7 +338,7 @@ def render_images(renders, bin_dir, images_dir):
             cmd += ["--camera", camera]
         cmd += shlex.split(extra)
         started = time.monotonic()
-        run(cmd, timeout=120)
+        run(cmd, timeout=120, cwd=source_root)
         if not os.path.isfile(out):
             raise SiteError(f"{' '.join(cmd)} wrote no image")
         log(f"rendered {os.path.basename(out)} ({time.monotonic() - started:.1f} s)")
@@ -605,7 +606,7 @@ def main():
         if not args.bin:
             raise SiteError("--bin is required (or --reuse)")
         generated["cli.json"] = cli_help(stages, os.path.abspath(args.bin))
-        render_images(renders, os.path.abspath(args.bin), images)
+        render_images(renders, os.path.abspath(args.bin), images, source_root)
         generated["derived.json"] = make_derived(derived, os.path.abspath(args.bin), images)
 
     for name, value in generated.items():

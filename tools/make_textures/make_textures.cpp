@@ -404,7 +404,7 @@ void writeGreyTga(const std::filesystem::path& path, const Grey& image, bool rle
 struct Output {
     const char* name;
     MaterialMaps (*make)();
-    float depthTexels; // must match the parallax scale in scene.cpp times kSize
+    float depthTexels; // must match the parallax scale in tools/make_scene/make_scene.cpp times kSize
     bool rleDiffuse;
     bool rleDepth;
 };

@@ -51,6 +51,7 @@ public:
     void renderFrame();
 
 private:
+    void loadScene(); // --scene (or the built-in scene) and --camera
     void resize(int width, int height);
     void buildStage();
     void quitStage();

@@ -1,5 +1,5 @@
-// First-person camera (WASD to move, mouse to look, scroll for field of view) and named presets
-// that give reproducible frames for headless renders and golden images.
+// First-person camera (WASD to move, mouse to look, scroll for field of view) and the preset it
+// starts from (a camera of the scene: see gltf_scene.hpp).
 #pragma once
 #include <glm/glm.hpp>
 
@@ -16,6 +16,8 @@ struct CameraPreset {
     float yawDegrees;   // 0 looks down -Z, positive turns right (towards +X)
     float pitchDegrees; // positive looks up
     float fovDegrees;   // vertical field of view
+    float nearPlane = 0.05f; // clip distances in metres (a glTF camera's znear and zfar)
+    float farPlane = 100.0f;
 };
 
 class Camera {
@@ -29,6 +31,8 @@ public:
     glm::vec3 forward() const;
     glm::vec3 right() const;
     float fovDegrees() const { return fov_; }
+    float yawDegrees() const { return yaw_; }
+    float pitchDegrees() const { return pitch_; }
 
     // Movement in camera space: x right, y up, z forward, already scaled by speed and time.
     void move(const glm::vec3& delta);
@@ -49,10 +53,11 @@ private:
     float yaw_ = 0.0f;
     float pitch_ = 0.0f;
     float fov_ = 60.0f;
+    float near_ = kNear;
+    float far_ = kFar;
 };
 
-// All presets; the first is the default. At least one frames the lights and the POM surfaces.
-const std::vector<CameraPreset>& cameraPresets();
-std::optional<CameraPreset> findCameraPreset(const std::string& name);
+// Yaw and pitch (degrees, as in CameraPreset) of a view direction; roll is not representable.
+glm::vec2 yawPitchOf(const glm::vec3& forward);
 
 } // namespace t10

@@ -24,7 +24,8 @@ struct Options {
     int frames = 0;                 // 0: until the window closes (headless runs default to 1)
     std::string output;             // --output FILE.png
     std::string exr;                // --exr FILE.exr
-    std::string camera = "default"; // --camera NAME
+    std::string camera;             // --camera NAME (empty: the scene's first camera)
+    std::string scene;              // --scene FILE.gltf|.glb (empty: the built-in scene)
     std::string shaderDir;          // --shader-dir DIR, searched before the stage's own folder
     std::string input;              // --input FILE.exr, replaces the scene by an HDR image
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame

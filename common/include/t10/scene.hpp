@@ -1,29 +1,25 @@
-// The scene as it stands before Tutorial 10: a room (floor, walls) and boxes with normal mapping and
-// parallax occlusion mapping, lit per fragment (Blinn-Phong) by HDR point lights that are also drawn
-// as emissive cubes. It renders into a GL_RGBA16F accumulation texture that stays bound to texture
-// unit 15, which is what every post-process stage reads.
+// The scene as it stands before Tutorial 10, drawn from a SceneDescription (a glTF file: the built-in
+// room of tools/make_scene, or --scene FILE): normal mapping, parallax occlusion mapping where a
+// material has a depth map, per-fragment Blinn-Phong lighting from HDR point and spot lights, and
+// emissive surfaces (the bright sources bloom spreads). It renders into a GL_RGBA16F accumulation
+// texture that stays bound to texture unit 15, which is what every post-process stage reads.
 #pragma once
 #include "t10/camera.hpp"
 #include "t10/contract.hpp"
 #include "t10/gl_object.hpp"
+#include "t10/gltf_scene.hpp"
 #include "t10/image.hpp"
 #include "t10/shader.hpp"
 
-#include <filesystem>
 #include <optional>
 #include <vector>
 
 namespace t10 {
 
-struct PointLight {
-    glm::vec3 position;
-    glm::vec3 colour; // linear HDR intensity it lights the room with (components up to 2.4); its cube shows 40x that
-};
-
 class Scene {
 public:
-    // Loads the TGA textures from assetDir and the scene shaders through `shaders`.
-    Scene(const ShaderManager& shaders, const std::filesystem::path& assetDir);
+    // Uploads the description's geometry and textures; loads the scene shaders through `shaders`.
+    Scene(const ShaderManager& shaders, const SceneDescription& description);
     ~Scene();
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
@@ -47,11 +43,15 @@ public:
 private:
     struct Mesh;
     struct Material;
+    std::vector<SceneMaterial> description_; // the materials' settings, which materials_ point into
     std::vector<Mesh> meshes_;
     std::vector<Material> materials_;
-    std::vector<PointLight> lights_;
+    std::vector<Texture> textures_;
+    Texture whiteTexture_;  // stands in for a missing base colour or emissive texture
+    Texture flatNormalTexture_;
+    Texture flatDepthTexture_;
+    std::vector<SceneLight> lights_;
     Program surfaceProgram_;
-    Program lightProgram_;
     Buffer cameraUbo_;
     Buffer lightUbo_;
     Texture accumulation_;
