@@ -31,9 +31,11 @@ help:
 	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
+	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make help   this list"
+	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
@@ -92,6 +94,19 @@ site-serve: site
 	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
 
+# `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
+# and a key-once final pass, and the key three ways with its error, at 320x180 .. 3840x2160 in a
+# release build (build-release/). Prints the tables; writes CSV, report.txt and bench.png into
+# $(OUT)/bench/. BENCH_ARGS passes options (e.g. BENCH_ARGS="--sizes 640x360,1280x720 --repeats 3").
+.PHONY: bench
+bench: PACKAGES += gnuplot-nox
+bench: deps
+	@[ -f build-release/build.ninja ] || cmake --preset release
+	cmake --build build-release -j $(JOBS) --target t10-bench
+	build-release/bin/t10-bench --out $(OUT)/bench $(BENCH_ARGS)
+	gnuplot -e "dir='$(OUT)/bench'" tools/bench/plot.gp
+	@echo "wrote $(OUT)/bench/bench.png"
+
 # The glTF loader's fuzzer (fuzz/gltf/): clang, ASan and UBSan into $(BUILD)/fuzz-gltf/, seeded with the
 # loader's test fixtures, run for FUZZ_GLTF_SECONDS (default 60; the loader was run for 1800 before it
 # was called done). Not part of `make test`.
@@ -112,6 +127,22 @@ bench-gltf: deps
 	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
 	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
 	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
+
+# Every view of every stage (--view), one frame each, into $(OUT)/views/<stage>/<view>.png; the views
+# a stage lacks are skipped (the program refuses them with exit code 2).
+VIEW_NAMES := final hdr luminance key bloom0 bloom1 blur ev nan
+.PHONY: views
+views: build
+	@for stage in $(STAGES); do \
+	    mkdir -p $(OUT)/views/$$stage; \
+	    for view in $(VIEW_NAMES); do \
+	        $(BIN)/$$stage --headless --frames 1 --size $(or $(VIEW_SIZE),640x360) --view $$view \
+	            --output $(OUT)/views/$$stage/$$view.png >/dev/null 2>$(OUT)/views/error.txt; \
+	        code=$$?; \
+	        if [ $$code -eq 0 ]; then echo "  $(OUT)/views/$$stage/$$view.png"; \
+	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
+	    done; \
+	done; rm -f $(OUT)/views/error.txt
 
 # Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
 # [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian

@@ -22,6 +22,7 @@
 #include "t10/contract.hpp"
 #include "t10/imgui_host.hpp"
 #include "t10/keys.hpp"
+#include "t10/views_panel.hpp"
 
 #include <CLI/CLI.hpp>
 #include <GLFW/glfw3.h>
@@ -39,10 +40,13 @@ namespace loc = t10::contract::extras;
 
 #include <glm/glm.hpp>
 
-// [step 40] std::isfinite for the scene key check, read back a few frames late
+// [step 40] std::isfinite for the scene key check, read back a few frames late; the exact key
+// (--key exact)
+#include "t10/exact_key.hpp"
 #include "t10/readback.hpp"
 
 #include <cmath>
+#include <memory>
 #include <optional>
 // [/step 40]
 
@@ -112,6 +116,10 @@ t10::TexelReadback g_KeyReadback; // copies that level without waiting: the key 
 float g_fSceneKey = 0.0f;         // Ya, read back from that level
 bool g_bSceneKeyValid = true;     // false while the read-back key is NaN or infinite
 bool g_bSceneKeyReported = false; // the warning goes to stderr once per run
+// --key exact: replace the mip chain's 1x1 level by the exact mean of level 0 (common/exact_key.hpp),
+// since at odd sizes glGenerateMipmap's filter may skip rows and columns
+bool g_bExactKey = false;
+std::unique_ptr<t10::ExactKey> g_pExactKey;
 // [/step 40]
 
 // [step 37] The window's panel and keyboard shortcuts
@@ -156,6 +164,7 @@ bool GL_Init(t10::App& app)
     // [step 40] GL_R16F holds log luminance as it is; GL_R16 needs it range mapped to [0, 1]
     glTexStorage2D(GL_TEXTURE_2D, iLevels, g_bLuminanceR16F ? GL_R16F : GL_R16, g_iWindowWidth, g_iWindowHeight);
     g_iLuminanceLevels = iLevels;
+    if (g_bExactKey && !g_pExactKey) g_pExactKey = std::make_unique<t10::ExactKey>(app.shaders());
     // [/step 40]
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -262,6 +271,9 @@ void GL_RenderPostProcess()
     glActiveTexture(GL_TEXTURE16);
     glBindTexture(GL_TEXTURE_2D, g_uiLuminanceKey);
     glGenerateMipmap(GL_TEXTURE_2D);
+    // [step 40] --key exact: the exact mean of level 0 replaces the mip chain's 1x1 level
+    if (g_pExactKey) g_pExactKey->store(g_uiLuminanceKey, g_iWindowWidth, g_iWindowHeight, g_iLuminanceLevels - 1);
+    // [/step 40]
     // [/step 15]
 
     // [step 24] Bind texture and generate mipmaps on bloom texture
@@ -440,6 +452,9 @@ void GL_RenderPanel(t10::App& app)
     }
     // [/step 40]
 
+    t10::ui::heading("Views (V, Shift+V; T: thumbnails)");
+    t10::ui::viewList(app.views());
+
     ImGui::Spacing();
     ImGui::TextDisabled("R resets every setting, H hides this panel");
     t10::ui::endPanel();
@@ -539,8 +554,10 @@ void GL_Quit()
     glDeleteProgram(g_uiGaussProgram);
     // [/step 30]
 
-    // [step 40] Delete the key's read-back buffers (with their pending copies)
+    // [step 40] Delete the key's read-back buffers (with their pending copies), and the exact key's
+    // program and buffers while the context is current
     g_KeyReadback.destroy();
+    g_pExactKey.reset();
     // [/step 40]
 }
 
@@ -572,6 +589,11 @@ void GL_AddOptions(CLI::App& cli)
            "--luminance-format", [](const std::string& strFormat) { g_bLuminanceR16F = strFormat == "r16f"; },
            "Step 40: r16 (GL_R16 with range mapping, the default) or r16f (GL_R16F without)")
         ->check(CLI::IsMember({"r16", "r16f"}));
+    cli.add_option_function<std::string>(
+           "--key", [](const std::string& strKey) { g_bExactKey = strKey == "exact"; },
+           "Step 40: mip (the 1x1 level of the mip chain, the default) or exact (the mean of every pixel, "
+           "computed on the GPU; the mip chain is inexact at odd sizes)")
+        ->check(CLI::IsMember({"mip", "exact"}));
     // [/step 40]
     cli.footer("Keys in the window (besides WASD, Q/E, Shift, the right mouse button, scroll and Esc):\n"
                "  Up / Down          white point Yw x1.25 / /1.25 (step 37)\n"
@@ -581,7 +603,8 @@ void GL_AddOptions(CLI::App& cli)
                "  PageUp / PageDown  blur passes +1 / -1; 0-9 sets them (step 39)\n"
                "  L                  luminance texture GL_R16 / GL_R16F (step 40)\n"
                "  R                  reset every setting\n"
-               "  H                  hide or show the panel");
+               "  H                  hide or show the panel\n"
+               "  V / Shift+V, T     next / previous view of the chain, thumbnails (common/, as --view)");
 }
 // [/step 37]
 

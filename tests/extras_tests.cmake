@@ -47,6 +47,14 @@ t10_add_extras_dump(extras_dim_r16f --input ${DUMPS}/inputs/dim.exr --white-poin
 # fewer, and its clamp bias no longer stands clear of the R16F bound, see test_extras.cpp).
 t10_add_extras_dump(extras_r16_lights ${SCENE} --camera lights)
 t10_add_extras_dump(extras_r16f_lights ${SCENE} --camera lights --luminance-format r16f)
+# --key exact at a size where Mesa's mip chain is off (320x180: 45 -> 22 -> 11 -> 5 rows).
+t10_add_extras_dump(extras_key_exact --size 320x180 --key exact)
+# The same check must reject the mip chain's key at that size (the dump goes under the name the
+# test case reads, in a folder of its own).
+add_test(NAME "dump: extras --key mip for the exact-key check"
+         COMMAND ${BIN}/extras --headless --backend egl --frames 1 --camera default --size 320x180 --key mip
+                 --dump ${DUMPS}/mutants/key_mip/extras_key_exact --output ${DUMPS}/mutants/key_mip/extras_key_exact/frame.png)
+set_tests_properties("dump: extras --key mip for the exact-key check" PROPERTIES FIXTURES_SETUP extras_key_mip)
 
 # --bench at a small size, its CSV read by the Catch2 test below.
 add_test(NAME "dump: extras_bench"
@@ -60,6 +68,13 @@ target_link_libraries(t10_extras_tests PRIVATE t10_reference t10_flags Catch2::C
 # Part 1 and Part 3 dumps (fixture dumps, tests/CMakeLists.txt) are compared with extras' own.
 catch_discover_tests(t10_extras_tests TEST_SPEC "~[window]" TEST_PREFIX "extras: "
                      PROPERTIES FIXTURES_REQUIRED extras_dumps ENVIRONMENT T10_DUMP_DIR=${DUMPS})
+
+add_test(NAME "extras rejects: the mip chain's key where --key exact is checked"
+         COMMAND ${EXPECT} nonzero "CHECK\\( relative <= bound \\)" -- ${CMAKE_COMMAND} -E env
+                 T10_DUMP_DIR=${DUMPS}/mutants/key_mip ${BIN}/t10_extras_tests
+                 "step 40: --key exact gives the exact log-average at a non-power-of-two size")
+set_tests_properties("extras rejects: the mip chain's key where --key exact is checked"
+                     PROPERTIES FIXTURES_REQUIRED extras_key_mip)
 
 # --- Step 40: a non-finite scene key is reported, once. -------------------------------------------
 # inf.exr / nan.exr put a non-finite log luminance into the GL_R16F chain (what the faulty hardware

@@ -78,7 +78,8 @@ add_test(NAME "layers: rejects a common/ header that includes a test's header"
 # --- The contract: every stage's shaders agree with common/include/t10/contract.hpp. -----------
 set(CONTRACT_CHECK ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/contract_check.py
     ${PROJECT_SOURCE_DIR}/common/include/t10/contract.hpp)
-set(shader_dirs ${PROJECT_SOURCE_DIR}/common/shaders)
+# tools/bench/shaders: the bench's own versions of the final pass read the same units.
+set(shader_dirs ${PROJECT_SOURCE_DIR}/common/shaders ${PROJECT_SOURCE_DIR}/tools/bench/shaders)
 foreach(stage IN LISTS T10_STAGES)
     list(APPEND shader_dirs ${PROJECT_SOURCE_DIR}/${stage})
 endforeach()

@@ -34,6 +34,9 @@ layout(location = 4) uniform vec3 v3Emissive;      // multiplies the emissive ma
 layout(location = 5) uniform int iAlphaMode;       // 0 opaque, 1 mask, 2 blend
 layout(location = 6) uniform float fAlphaCutoff;   // mask: fragments below it are discarded
 layout(location = 7) uniform float fNormalScale;   // scales the normal map's x and y
+// At most this many parallax layers (grazing views; 100 unless a window on a software renderer
+// lowers it while the camera moves, see Scene::setRenderOnChange).
+layout(location = 8) uniform float fMaxParallaxLayers;
 
 layout(location = 0) in vec3 v3Position;
 layout(location = 1) in vec3 v3Normal;
@@ -55,7 +58,7 @@ const float kFalloffSoftening = 0.05f;
 // undisplaced coordinate, v2Dx and v2Dy.
 vec3 parallaxOcclusionMapping(vec2 v2TexCoord, vec3 v3View, vec2 v2Dx, vec2 v2Dy) {
     const float fMinLayers = 10.0f;
-    const float fMaxLayers = 100.0f;
+    float fMaxLayers = max(fMaxParallaxLayers, fMinLayers);
     // Looking straight down needs few layers; grazing views need many.
     float fNumLayers = mix(fMaxLayers, fMinLayers, abs(v3View.z));
     float fLayerDepth = 1.0f / fNumLayers;

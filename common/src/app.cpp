@@ -8,6 +8,7 @@
 #include "t10/error.hpp"
 #include "t10/gpu_timers.hpp"
 #include "t10/image_io.hpp"
+#include "t10/interactive.hpp"
 #include "t10/outputs.hpp"
 
 #include <GLFW/glfw3.h>
@@ -56,6 +57,8 @@ App::App(const Stage& stage, const Options& options, Context& context)
                   << "version:  " << glString(GL_VERSION) << "\n";
     }
     quad_ = std::make_unique<FullScreenQuad>();
+    views_ = std::make_unique<ViewService>(shaders_, *findView(options_.view));
+    views_->showThumbnails(options_.thumbnails);
     loadScene();
     context_.framebufferSize(width_, height_);
     if (!options_.input.empty()) {
@@ -72,7 +75,10 @@ App::App(const Stage& stage, const Options& options, Context& context)
         scene_->setInputImage(std::move(image));
     }
     if (context_.isWindow()) {
+        // Interactive speed without a GPU (t10/interactive.hpp); headless renders are unchanged.
+        if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         input_ = std::make_unique<CameraInput>(context_.window(), camera_);
+        viewKeys_ = std::make_unique<ViewKeys>(context_.window());
         if (!options_.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
         // After the camera's callbacks, so that the UI's chain to them.
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
@@ -177,6 +183,7 @@ int App::run() {
         const double elapsed = secondsSince(last);
         last = Clock::now();
         if (input_ != nullptr) input_->update(elapsed);
+        if (viewKeys_ != nullptr && (ui_ == nullptr || !ui_->wantsKeyboard())) viewKeys_->update(*views_);
         if (width_ == 0 || height_ == 0) {
             if (window) glfwWaitEventsTimeout(0.1);
             continue;
@@ -184,6 +191,7 @@ int App::run() {
         const auto start = Clock::now();
         renderFrame();
         if (stage_.timers != nullptr) stage_.timers->collect(false);
+        views_->draw(*quad_, width_, height_);
         drawUi();
         if (!window) glFinish();
         const double renderMs = secondsSince(start) * 1000.0;
@@ -228,8 +236,8 @@ void App::followSize(int frame) {
 
 void App::showFrameTimeInTitle() {
     char title[160];
-    std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps)", stage_.name, frameTimeMs_,
-                  frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0);
+    std::snprintf(title, sizeof title, "%s - %.1f ms (%.0f fps) - view %s (V)", stage_.name, frameTimeMs_,
+                  frameTimeMs_ > 0.0 ? 1000.0 / frameTimeMs_ : 0.0, viewName(views_->current()));
     context_.setTitle(title);
 }
 

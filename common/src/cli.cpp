@@ -6,6 +6,7 @@
 #include "t10/cli_range.hpp"
 
 #include "t10/error.hpp"
+#include "t10/views.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -73,6 +74,9 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
                                               "15-17 (contract.hpp) as PFM files into DIR (for numeric checks)");
     app.add_option("--resize-sequence", resizeSequence, "Resize before each frame: WxH,WxH,... (0x0 acts like a "
                                                         "minimised window; for tests)");
+    app.add_option("--view", options.view, "What to show: " + allViewNames() + " (default final; V cycles in a window)");
+    app.add_flag("--thumbnails", options.thumbnails, "Draw a strip of thumbnails of every target of the chain "
+                                                      "along the bottom, each labelled (T toggles in a window)");
     app.add_flag("--verbose,-v", options.verbose, "Print the GL vendor, renderer and version, and frame times");
     CLI::Option* bench = app.add_option("--bench", options.bench,
                                         "Render N frames after " + std::to_string(kBenchWarmUpFrames) +
@@ -105,6 +109,9 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         }
         if (!options.scene.empty() && !endsWith(options.scene, ".gltf") && !endsWith(options.scene, ".glb")) {
             throw UsageError("--scene " + options.scene + ": the file name must end in .gltf or .glb");
+        }
+        if (!findView(options.view)) {
+            throw UsageError("--view " + options.view + ": unknown view (choose from " + allViewNames() + ")");
         }
         if (!resizeSequence.empty()) {
             std::stringstream list(resizeSequence);

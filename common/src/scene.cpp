@@ -33,6 +33,8 @@ constexpr GLint kEmissiveLocation = 4;
 constexpr GLint kAlphaModeLocation = 5;
 constexpr GLint kAlphaCutoffLocation = 6;
 constexpr GLint kNormalScaleLocation = 7;
+constexpr GLint kMaxParallaxLayersLocation = 8;
+constexpr float kFullParallaxLayers = 100.0f; // Scene.frag's search at grazing angles
 
 // std140 mirrors of the uniform blocks (vec4/mat4 members only, so no padding surprises).
 struct CameraBlock {
@@ -172,6 +174,7 @@ void Scene::resize(int width, int height) {
         throw Error("Scene::resize: invalid size " + std::to_string(width) + "x" + std::to_string(height));
     width_ = width;
     height_ = height;
+    lastCamera_.clear(); // a new accumulation texture holds nothing yet
 
     // Immutable storage cannot change size, so a resize makes new objects.
     framebuffer_.reset();
@@ -230,15 +233,35 @@ void Scene::render(const Camera& camera) {
         return;
     }
 
+    const CameraBlock cameraBlock{camera.view(),
+                                  camera.projection(static_cast<float>(width_) / static_cast<float>(height_)),
+                                  glm::vec4(camera.position(), 1.0f)};
+    // Render on change: the same camera on the same target gives the same image, which is still
+    // in the accumulation texture. The state is left as a full render leaves it.
+    float parallaxLayers = kFullParallaxLayers;
+    if (renderOnChange_) {
+        const auto* cameraFloats = reinterpret_cast<const float*>(&cameraBlock);
+        std::vector<float> cameraKey(cameraFloats, cameraFloats + sizeof cameraBlock / sizeof(float));
+        const bool same = cameraKey == lastCamera_;
+        if (same && lastFull_) {
+            glUseProgram(0);
+            glBindVertexArray(0);
+            glActiveTexture(GL_TEXTURE0);
+            return;
+        }
+        // While the camera moves: the moving layer limit; once it stops: one full-quality frame.
+        const bool moving = !same && !lastCamera_.empty();
+        if (moving) parallaxLayers = movingParallaxLayers_;
+        lastFull_ = !moving;
+        lastCamera_ = std::move(cameraKey);
+    }
+
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glDisable(GL_BLEND);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
 
-    const CameraBlock cameraBlock{camera.view(),
-                                  camera.projection(static_cast<float>(width_) / static_cast<float>(height_)),
-                                  glm::vec4(camera.position(), 1.0f)};
     glBindBuffer(GL_UNIFORM_BUFFER, cameraUbo_.get());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(CameraBlock), &cameraBlock);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
@@ -275,6 +298,7 @@ void Scene::render(const Camera& camera) {
         glUniform1i(kAlphaModeLocation, static_cast<GLint>(d.alphaMode));
         glUniform1f(kAlphaCutoffLocation, d.alphaCutoff);
         glUniform1f(kNormalScaleLocation, d.normalScale);
+        glUniform1f(kMaxParallaxLayersLocation, parallaxLayers);
         glBindVertexArray(mesh.vao.get());
         glDrawElements(GL_TRIANGLES, mesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }

@@ -1,7 +1,8 @@
 // The frame loop every stage runs: runStage() parses the command line and creates the context;
 // App owns the scene, the camera and the quad, calls the stage's GL_Init / GL_Render / GL_Quit,
 // follows resizes and rebuild requests, and hands the rest to services: camera_input (keys and
-// mouse), outputs (the files after the last frame), bench (--bench) and the stage's UI host.
+// mouse), outputs (the files after the last frame), bench (--bench), views (--view, drawn over the
+// stage's frame before the UI) and the stage's UI host.
 // A stage's main() is one call to runStage().
 #pragma once
 #include "t10/camera.hpp"
@@ -15,6 +16,7 @@
 #include "t10/shader.hpp"
 #include "t10/stage.hpp"
 #include "t10/ui_host.hpp"
+#include "t10/views.hpp"
 
 #include <memory>
 #include <string>
@@ -39,6 +41,8 @@ public:
     Context& context() { return context_; }
     // Milliseconds the last frame took (render + glFinish headless; swap to swap in a window).
     double frameTimeMs() const { return frameTimeMs_; }
+    // The view selector (--view, V / Shift+V and T in a window, the list in extras' panel).
+    ViewService& views() { return *views_; }
 
     // The stage's size-independent settings changed what GL_Init makes (extras' luminance format):
     // GL_Quit, then GL_Init at the current size, before the next frame.
@@ -76,6 +80,8 @@ private:
     bool rebuildRequested_ = false;
     double frameTimeMs_ = 0.0;
     std::unique_ptr<GlErrorLog> glErrors_;
+    std::unique_ptr<ViewService> views_;
+    std::unique_ptr<ViewKeys> viewKeys_;
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).

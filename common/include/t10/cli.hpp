@@ -30,6 +30,8 @@ struct Options {
     std::string input;              // --input FILE.exr, replaces the scene by an HDR image
     std::string dumpDir;            // --dump DIR, textures on units 15-17 as PFM after the last frame
     std::vector<std::pair<int, int>> resizeSequence; // --resize-sequence, one size per frame
+    std::string view = "final";     // --view NAME, checked against t10::findView
+    bool thumbnails = false;        // --thumbnails: the strip of every target under the frame
     bool verbose = false;
     int bench = 0;        // --bench N: timed frames before the ordinary ones (0: no benchmark)
     std::string benchCsv; // --bench-csv FILE

@@ -36,6 +36,18 @@ public:
     // must match the size given to resize(); channels 3 or 4.
     void setInputImage(std::optional<ImageF> image);
 
+    // Interactive speed on software renderers (the window sets these; headless renders keep the
+    // defaults, so the golden images do not change). With render-on-change, render() skips drawing
+    // when the camera and the size are those of the last full-quality frame (the accumulation
+    // texture still holds it); while the camera moves the parallax search takes at most
+    // `movingLayers` steps (default 100, at least 10), and the first frame after it stops is drawn
+    // at full quality again, so a still view looks exactly like a headless render.
+    void setRenderOnChange(bool on, float movingLayers = 100.0f) {
+        renderOnChange_ = on;
+        movingParallaxLayers_ = movingLayers;
+        lastCamera_.clear();
+    }
+
     GLuint accumulationTexture() const { return accumulation_.get(); }
     int width() const { return width_; }
     int height() const { return height_; }
@@ -60,6 +72,10 @@ private:
     std::optional<ImageF> input_;
     int width_ = 0;
     int height_ = 0;
+    float movingParallaxLayers_ = 100.0f;
+    bool renderOnChange_ = false;
+    std::vector<float> lastCamera_; // the camera block of the last drawn frame (empty: none)
+    bool lastFull_ = false;         // that frame was drawn at full quality
 };
 
 } // namespace t10
