@@ -32,6 +32,8 @@ help:
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
 	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
+	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
+	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make help   this list"
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
@@ -162,3 +164,29 @@ views: build
 	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
 	    done; \
 	done; rm -f $(OUT)/views/error.txt
+
+# Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
+# [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian
+# package: grade-deps installs the pinned flip-evaluator from PyPI into a venv under build/.
+FLIP_VERSION := 1.7
+GRADE_VENV   := $(BUILD)/grade-venv
+REPORT       ?= grade-report
+GRADE_JOBS   ?= $(JOBS)
+.PHONY: grade grade-args grade-deps grade-deps-or-skip
+grade-deps: PACKAGES += python3-venv
+grade-deps: deps
+	@[ -x $(GRADE_VENV)/bin/flip ] && $(GRADE_VENV)/bin/pip show flip-evaluator 2>/dev/null | grep -qx 'Version: $(FLIP_VERSION)' || { \
+	    rm -rf $(GRADE_VENV) && python3 -m venv $(GRADE_VENV) && \
+	    $(GRADE_VENV)/bin/pip install --quiet --disable-pip-version-check flip-evaluator==$(FLIP_VERSION); }
+
+grade-args:
+	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)" ] || { echo 'usage: make grade PART=1|2|3 SUBMISSIONS="dir ..." [REPORT=dir] [GRADE_JOBS=N]'; exit 2; }
+
+grade: grade-args build grade-deps
+	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
+
+# The grader's tests need FLIP too; without it (no network for PyPI) they report themselves skipped.
+grade-deps-or-skip:
+	@$(MAKE) --no-print-directory grade-deps || echo "warning: FLIP could not be installed: the grader's tests will be skipped"
+
+test: grade-deps-or-skip

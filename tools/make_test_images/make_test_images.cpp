@@ -1,6 +1,9 @@
 // make_test_images: writes the synthetic HDR inputs the numeric tests post-process with --input:
 //   hot.exr  128x128 grey 0.05 with one 2x2 block of 20.0 centred on a texel of the half-size grid
 //   dim.exr  128x128 smooth gradient whose luminance stays below the bloom threshold (2.95 x 0.22)
+//   extremes.exr  64x64: 16 rows exactly black (a tone map without a guard divides 0 by 0
+//            there), below them grey steps from 0.001 to 50 in luminance, so that pixels sit below,
+//            at and far above the white point Yw = 0.22 and the bloom threshold 2.95 x Yw
 //   inf.exr, nan.exr  64x64 grey 0.1 with one texel of +infinity / NaN: through GL_R16F (no range
 //            mapping) log(inf) and log(NaN) reach the 1x1 luminance level, which is what a GPU whose
 //            glGenerateMipmap breaks float textures produces (exercise 40); through GL_R16 the value
@@ -11,6 +14,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <cmath>
 #include <limits>
 
 namespace {
@@ -46,6 +50,26 @@ t10::ImageF dimGradient() {
     return image;
 }
 
+t10::ImageF extremes() {
+    constexpr int kExtremesSize = 64;
+    constexpr int kBlackRows = 16;
+    t10::ImageF image(kExtremesSize, kExtremesSize, 4);
+    for (int y = 0; y < kExtremesSize; ++y) {
+        for (int x = 0; x < kExtremesSize; ++x) {
+            // Grey from 10^-3 to 10^1.7 along x (a step every 4 pixels), tinted by row so that the
+            // channels differ; the top rows stay black.
+            const float grey = std::pow(10.0f, -3.0f + 4.7f * float(x / 4) / float(kExtremesSize / 4 - 1));
+            const float tint = float(y % 4) * 0.1f;
+            const bool black = y >= kExtremesSize - kBlackRows;
+            image.at(x, y, 0) = black ? 0.0f : grey * (1.0f + tint);
+            image.at(x, y, 1) = black ? 0.0f : grey;
+            image.at(x, y, 2) = black ? 0.0f : grey * (1.0f - tint);
+            image.at(x, y, 3) = 1.0f;
+        }
+    }
+    return image;
+}
+
 t10::ImageF greyWith(float special) {
     constexpr int kSpecialSize = 64;
     t10::ImageF image(kSpecialSize, kSpecialSize, 4);
@@ -68,9 +92,10 @@ int main(int argc, char** argv) {
         const std::string dir = argv[1];
         t10::writeExr(dir + "/hot.exr", hotPixel());
         t10::writeExr(dir + "/dim.exr", dimGradient());
+        t10::writeExr(dir + "/extremes.exr", extremes());
         t10::writeExr(dir + "/inf.exr", greyWith(std::numeric_limits<float>::infinity()));
         t10::writeExr(dir + "/nan.exr", greyWith(std::numeric_limits<float>::quiet_NaN()));
-        std::cout << "wrote hot.exr, dim.exr, inf.exr and nan.exr into " << dir << "\n";
+        std::cout << "wrote hot.exr, dim.exr, extremes.exr, inf.exr and nan.exr into " << dir << "\n";
         return 0;
     } catch (const t10::Error& error) {
         std::cerr << "make_test_images: error: " << error.what() << "\n";

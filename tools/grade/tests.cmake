@@ -1,0 +1,87 @@
+# Tests of the graders (included from tools/grade/CMakeLists.txt). The submissions are written at test
+# time from the current reference stages by tests/make_submissions.py: each reference and a
+# shaders-only copy of it must score 100, each known mistake must fail the check of its step with its
+# diagnosis, and broken submissions must get their status within the time limit. Renders are small
+# (128x128, 160x90, 64x64) and the reference renders and built submissions are cached, so the part 3
+# batch takes a few seconds of CPU per submission.
+find_package(Python3 REQUIRED COMPONENTS Interpreter)
+set(EXPECT ${PROJECT_SOURCE_DIR}/tests/expect.sh)
+set(GRADE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/tests)
+set(GRADE_OUT ${CMAKE_CURRENT_BINARY_DIR}/test-out)
+set(GRADE_SUBMISSIONS ${GRADE_OUT}/submissions)
+set(GRADE_REPORTS ${GRADE_OUT}/reports)
+set(GRADE_RUN ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${PROJECT_BINARY_DIR}/bin/t10-grade)
+set(GRADE_CHECK ${Python3_EXECUTABLE} ${GRADE_TESTS}/check_reports.py)
+# A render of the loop submission is killed after this many seconds; every other render takes one to three.
+set(GRADE_TIMEOUT 20)
+
+add_test(NAME "grade: write the test submissions"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/make_submissions.py ${PROJECT_SOURCE_DIR} ${GRADE_SUBMISSIONS})
+set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SETUP grade_submissions)
+
+set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weight tap sigma no_unmapping log2_exp black_nan
+    bloom_after full_res_offsets ceil_levels swapped_subroutines viewport_reset pass_count
+    no_compile shader_error crash loop)
+set(GRADE_PART1 reference1 shaders1)
+set(GRADE_PART2 reference2 shaders2)
+foreach(part 1 2 3)
+    set(folders "")
+    foreach(name IN LISTS GRADE_PART${part})
+        list(APPEND folders ${GRADE_SUBMISSIONS}/part${part}/${name})
+    endforeach()
+    add_test(NAME "grade: part ${part} batch with --jobs 2"
+             COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/part${part} ${folders})
+    # COST: ctest starts the long batches first, beside the many short tests.
+    set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES COST 1000
+                         FIXTURES_SETUP grade_part${part} FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+    add_test(NAME "grade: part ${part} reports, scores and diagnoses"
+             COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/part${part} ${GRADE_PART${part}})
+    set_tests_properties("grade: part ${part} reports, scores and diagnoses" PROPERTIES FIXTURES_REQUIRED grade_part${part})
+endforeach()
+
+# The batch graded in parallel gives the same gradebook rows as grading one at a time (a shader
+# mistake, a host-code mistake and a submission that does not build).
+set(single_gradebooks "")
+foreach(name weight viewport_reset no_compile)
+    add_test(NAME "grade: ${name} alone"
+             COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/alone-${name}
+                     ${GRADE_SUBMISSIONS}/part3/${name})
+    set_tests_properties("grade: ${name} alone" PROPERTIES
+                         FIXTURES_SETUP grade_alone FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+    list(APPEND single_gradebooks ${GRADE_REPORTS}/alone-${name}/gradebook.csv)
+endforeach()
+add_test(NAME "grade: --jobs 2 gives the same gradebook as one by one"
+         COMMAND ${GRADE_CHECK} same ${GRADE_REPORTS}/part3/gradebook.csv ${single_gradebooks})
+set_tests_properties("grade: --jobs 2 gives the same gradebook as one by one" PROPERTIES
+                     FIXTURES_REQUIRED "grade_part3;grade_alone")
+
+# Bad usage exits 2 with a message naming the argument.
+foreach(case
+        "2;--part is required;${GRADE_SUBMISSIONS}"
+        "2;--part 4: choose 1, 2 or 3;--part;4;${GRADE_SUBMISSIONS}"
+        "2;no SUBMISSION folder given;--part;1"
+        "2;/nonexistent-submission: not a folder;--part;1;/nonexistent-submission"
+        "2;--jobs 0: expected a number from 1 to 64;--part;1;--jobs;0;${GRADE_SUBMISSIONS}"
+        "2;unknown option --bogus;--part;1;--bogus"
+        "2;would overwrite the submission;--part;1;--report;${PROJECT_SOURCE_DIR};${PROJECT_SOURCE_DIR}/tutorial10_part1_tonemap")
+    list(POP_FRONT case code regex)
+    string(REPLACE ";" " " label "${case}")
+    add_test(NAME "grade: usage t10-grade ${label}" COMMAND ${EXPECT} ${code} "${regex}" -- ${PROJECT_BINARY_DIR}/bin/t10-grade ${case})
+endforeach()
+
+# --- t10-grade-tga: full marks for the project's tga2png, each fault of tga_mutant caught. ---------
+add_executable(tga_mutant tests/tga_mutant.cpp)
+target_link_libraries(tga_mutant PRIVATE t10_common t10_flags)
+set(GRADE_TGA ${PROJECT_BINARY_DIR}/bin/t10-grade-tga --timeout 2)
+add_test(NAME "grade tga: tga2png gets full marks"
+         COMMAND ${EXPECT} 0 "score 100 \\(" -- ${GRADE_TGA} "${PROJECT_BINARY_DIR}/bin/tga2png {in} {out}")
+foreach(case "flip;FAIL  rgb24_raw_bl: wrong orientation" "swap;FAIL  rgb24_raw_bl: wrong channel order"
+             "crash;FAIL  rgb24_raw_bl: crash" "hang;FAIL  rgb24_rle_bl: hang"
+             "accept;FAIL  malformed_zero_width: accepted a malformed file")
+    list(GET case 0 mode)
+    list(GET case 1 regex)
+    add_test(NAME "grade tga: catches a converter that does --${mode}"
+             COMMAND ${EXPECT} 0 "${regex}" -- ${GRADE_TGA} "${PROJECT_BINARY_DIR}/bin/tga_mutant --${mode} {in} {out}")
+endforeach()
+add_test(NAME "grade tga: usage without {in} {out}"
+         COMMAND ${EXPECT} 2 "must contain \\{in\\} and \\{out\\}" -- ${GRADE_TGA} "tga2png")
