@@ -7,8 +7,8 @@
 // mistake made) and measured the same way; the one that matches names the diagnosis.
 //
 // Adding a known mistake: add a Mistake below with the text a student reads, then a model to the
-// list of the check it breaks (keyModels, frameModels, thresholdModels, blurModels), and a
-// submission that makes it to tools/grade/tests.cmake.
+// list of the check it breaks (keyModels, frameModels, thresholdModels, blurModels, the pass models
+// of blur-passes), and a submission that makes it to tools/grade/tests.cmake.
 #include "checks.hpp"
 
 #include "compare.hpp"
@@ -20,7 +20,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numeric>
 #include <sstream>
@@ -340,6 +342,40 @@ double worstStoreError(const ImageF& gpu, const ImageF& cpu, const ImageF* class
     return worst;
 }
 
+// --- Each blur pass (steps 27, 32-34), captured by pass_capture.cpp. --------------------------------
+struct CapturedPass {
+    std::string subroutine; // the subroutine the pass ran with
+    ImageF image;           // the texture level it drew into
+};
+
+// <dump>/blur_passes.txt and its blur_passNN.pfm; false when the program did not capture (no file).
+bool loadPasses(const std::string& dir, std::vector<CapturedPass>& passes) {
+    std::ifstream list(dir + "/blur_passes.txt");
+    if (!list) return false;
+    for (std::string line; std::getline(list, line);) {
+        std::istringstream fields(line);
+        int index = 0;
+        CapturedPass pass;
+        fields >> index >> pass.subroutine;
+        char file[32];
+        std::snprintf(file, sizeof(file), "blur_pass%02d.pfm", index);
+        pass.image = t10::readPfm(dir + "/" + file);
+        passes.push_back(std::move(pass));
+    }
+    return true;
+}
+
+std::string passName(std::size_t k) {
+    return "pass " + std::to_string(k / 2 + 1) + (k % 2 == 0 ? " horizontal" : " vertical");
+}
+
+// A mistake made in one pass: the model's offsets, along the pass's axis or the other one.
+struct PassModel {
+    const Mistake* mistake;
+    BlurModel blur;
+    bool otherAxis = false;
+};
+
 class CheckWriter {
 public:
     CheckWriter(const CaseRun& run, std::string reportDir, std::string imageDir)
@@ -559,6 +595,85 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             check.diagnosis = text;
         }
         checks.push_back(check);
+    }
+
+    if (part >= 3) {
+        // Every blur pass (steps 27, 32-34): each captured pass against one CPU Gaussian pass of the
+        // texture the GPU wrote one pass earlier (bloom level 0 for the first), so the first pass that
+        // goes wrong is named, whatever the passes after it do. Same bound as the blur check: with
+        // the store rule emulated what is left is float vs double and the bilinear weights.
+        std::vector<CapturedPass> passes;
+        const bool captured = loadPasses(dump.dir, passes);
+        const ref::FloatStore store = ref::detectFloatStore(bloom0, ref::bloomThreshold(acc));
+        const int w = std::max(1, bloom0.width / 2);
+        const int h = std::max(1, bloom0.height / 2);
+        constexpr double kWorst = 2.0 / 32.0;
+        constexpr double kMean = 1e-4;
+        Check check = writer.make("blur-passes", {27, 32, 33, 34});
+        check.tolerance = "each pass: worst <= 2/32 of the peak (two R11G11B10F blue steps), mean <= 1e-4 of the "
+                          "peak, against one CPU pass of the GPU's previous pass";
+        std::string worstText;
+        double worstMean = -1.0;
+        check.passed = captured && !passes.empty();
+        if (!captured) {
+            check.measured = "no pass was captured (the grader's capture did not run)";
+            check.diagnosis = "the program was not built with t10-grade's pass capture";
+        } else if (passes.empty()) {
+            check.measured = "the blur program drew no pass into a texture";
+            check.diagnosis = "no blur pass: check the blur framebuffers and draws (steps 30, 32-34)";
+        }
+        for (std::size_t k = 0; k < passes.size() && check.passed; ++k) {
+            const ImageF& source = k == 0 ? bloom0 : passes[k - 1].image;
+            const bool horizontal = k % 2 == 0;
+            ImageF expected = ref::gaussianPass(source, w, h, horizontal);
+            ref::storeR11G11B10F(expected, store);
+            const PeakError error = peakError(passes[k].image, expected);
+            const std::string figures = passName(k) + " (subroutine " + passes[k].subroutine + "): worst " +
+                                        format(error.worst) + " of the peak, mean " + format(error.mean) + " of the peak";
+            if (error.worst <= kWorst && error.mean <= kMean) {
+                if (error.mean > worstMean) {
+                    worstMean = error.mean;
+                    worstText = figures;
+                }
+                continue;
+            }
+            check.passed = false;
+            check.measured = "first failing pass: " + figures +
+                             (k == 0 ? "" : k == 1 ? " (the pass before it is within tolerance)"
+                                                        : " (the " + std::to_string(k) + " passes before it are within tolerance)");
+            const std::vector<PassModel> models{{&kOneAxis, {nullptr}, true},
+                                                {&kFullRes, {nullptr, 5, ref::kSigma, ref::kTap1, 0.5}},
+                                                {&kSigma, {nullptr, 5, 2.0}},
+                                                {&kTap, {nullptr, 5, ref::kSigma, 0.424}}};
+            const auto measure = [&](const PassModel& m) {
+                ImageF model = modelPass(source, w, h, horizontal != m.otherAxis, m.blur);
+                ref::storeR11G11B10F(model, store);
+                return peakError(passes[k].image, model).mean;
+            };
+            check.diagnosis = passName(k) + ": " +
+                              diagnose<PassModel>(models, measure, [&](double e) { return e <= kMean; }, error.mean,
+                                                  "no known mistake matches: check Gauss.frag's offsets and the "
+                                                  "subroutine and texture of this pass");
+        }
+        if (check.passed) check.measured = std::to_string(passes.size()) + " passes within tolerance; the farthest: " + worstText;
+        checks.push_back(check);
+
+        // The number of passes (step 34): five pairs, counted from the captured draws.
+        Check count = writer.make("blur-pass-count", {34});
+        const int expectedPasses = 2 * ref::kBlurPasses;
+        count.passed = captured && int(passes.size()) == expectedPasses;
+        count.measured = std::to_string(passes.size()) + " blur passes drawn into textures";
+        count.tolerance = "exactly " + std::to_string(expectedPasses) + " (" + std::to_string(ref::kBlurPasses) +
+                          " horizontal + vertical pairs): the count is exact";
+        if (!count.passed && captured) {
+            count.diagnosis = std::string("likely mistake [") + kPassCount.id + "]: " + kPassCount.text + " (" +
+                              (passes.size() % 2 == 0 ? std::to_string(passes.size() / 2) + " pairs"
+                                                      : std::to_string(passes.size()) + " passes, not whole pairs") +
+                              " instead of " + std::to_string(ref::kBlurPasses) + ")";
+        } else if (!count.passed) {
+            count.diagnosis = check.diagnosis;
+        }
+        checks.push_back(count);
     }
 
     // The final frame (steps 6-10, 19-20, 35): the CPU tone map of the GPU's own buffers.

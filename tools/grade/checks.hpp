@@ -1,5 +1,6 @@
 // The checks t10-grade runs on one rendered case of a submission: every intermediate buffer that
-// the part writes (luminance levels and key, bloom levels, the blurred bloom) against the CPU
+// the part writes (luminance levels and key, bloom levels, each blur pass as pass_capture.cpp
+// recorded it, the blurred bloom) against the CPU
 // reference of tests/numeric, the final frame against the CPU tone map of the buffers the GPU
 // produced, and the frame against the reference stage with FLIP. A failed check asks the mistake
 // catalogue (mistakes.hpp) which known mistake explains the measurement.
@@ -32,7 +33,8 @@ struct CaseRun {
     t10::test::Dump dump;
 };
 
-// Reads <dir>/unit15_level0.pfm and <dir>/frame.png; throws t10::Error naming a missing file.
+// Reads <dir>/unit15_level0.pfm and <dir>/frame.png; throws t10::Error naming a missing file. The
+// blur passes (<dir>/blur_passes.txt) are read by bufferChecks.
 t10::test::Dump loadDumpDir(const std::string& dir);
 
 // The buffer checks of `part` (1, 2 or 3) for one case. Images for failed image checks go into

@@ -5,7 +5,8 @@
 // then it renders four cases under limits (a power-of-two size with one camera, a
 // non-power-of-two size with another, and two synthetic inputs: black pixels next to pixels far
 // above the white point, and one hot pixel), and checks.hpp compares every buffer with the CPU
-// reference and the frame with the reference stage (FLIP). Writes DIR/<submission>/report.json and
+// reference and the frame with the reference stage (FLIP). Part 3 programs are built with
+// pass_capture.cpp, which records each blur pass beside the dump. Writes DIR/<submission>/report.json and
 // report.html and DIR/gradebook.csv. Exit 0 when every submission got a report, 1 when the grader
 // failed, 2 on bad usage.
 #include "checks.hpp"
@@ -260,6 +261,12 @@ public:
         fs::create_directories(config_.reportDir);
         prepareInputs();
         prepareReference();
+        if (config_.part == 3) {
+            // Shaders-only submissions share the reference host code built with the pass capture:
+            // built once here rather than by each of the parallel jobs.
+            std::string log;
+            if (build(referenceHost(), log).empty()) throw Error(referenceHost() + " with the pass capture does not build:\n" + log);
+        }
     }
 
     Report grade(const std::string& submission) const;
@@ -267,6 +274,9 @@ public:
 private:
     void prepareInputs();
     void prepareReference();
+    std::string referenceHost() const {
+        return std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage + "/Tutorial10.cpp";
+    }
     std::vector<std::string> caseArgs(const CaseSpec& spec) const {
         std::vector<std::string> args;
         for (std::string arg : spec.args) {
@@ -330,7 +340,11 @@ void Grader::prepareReference() {
 std::string Grader::build(const std::string& source, std::string& log) const {
     // The key: the code, the recipe, and when each library was last built (a rebuilt common/ must
     // not leave stale programs in the cache).
-    std::string key = kit_.text + info_.stage + readFile(source);
+    // Part 3 programs carry the blur pass capture (pass_capture.cpp): the submission's call of
+    // t10::runStage() is renamed to the capture's t10::gradeRunStage().
+    const std::string capture = std::string(T10_GRADE_SOURCE_DIR) + "/tools/grade/pass_capture.cpp";
+    const bool captures = config_.part == 3;
+    std::string key = kit_.text + info_.stage + readFile(source) + (captures ? readFile(capture) : "");
     for (const std::string& lib : kit_.libs) {
         std::error_code error;
         const auto time = fs::last_write_time(lib, error);
@@ -351,6 +365,7 @@ std::string Grader::build(const std::string& source, std::string& log) const {
     argv.push_back(std::string("-DT10_STAGE_NAME=\"") + info_.stage + "\"");
     argv.push_back(std::string("-DT10_STAGE_SHADER_DIR=\"") + T10_GRADE_SOURCE_DIR + "/" + info_.stage + "\"");
     // The submission's own file, so that the compiler's messages name it.
+    if (captures) argv.insert(argv.end(), {"-DrunStage=gradeRunStage", capture});
     argv.insert(argv.end(), {source, "-o", (temporary / "student").string()});
     argv.insert(argv.end(), kit_.libs.begin(), kit_.libs.end());
     {
@@ -441,9 +456,14 @@ Report Grader::grade(const std::string& submission) const {
 
     const std::string sourceDir = fs::absolute(submission).string();
     std::string binary = referenceBinary_;
-    if (fs::exists(sourceDir + "/Tutorial10.cpp")) {
+    // Part 3 always runs a program built here, so that its blur passes are captured: a
+    // shaders-only submission gets the reference host code (built once, then cached).
+    const std::string host = fs::exists(sourceDir + "/Tutorial10.cpp") ? sourceDir + "/Tutorial10.cpp"
+                             : config_.part == 3                         ? referenceHost()
+                                                                         : "";
+    if (!host.empty()) {
         std::string log;
-        binary = build(sourceDir + "/Tutorial10.cpp", log);
+        binary = build(host, log);
         std::ofstream(out / "build.log") << log;
         if (binary.empty()) {
             report.status = "build-failed";

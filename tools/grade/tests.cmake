@@ -3,7 +3,9 @@
 # shaders-only copy of it must score 100, each known mistake must fail the check of its step with its
 # diagnosis, and broken submissions must get their status within the time limit. Renders are small
 # (128x128, 160x90, 64x64) and the reference renders and built submissions are cached, so the part 3
-# batch takes a few seconds of CPU per submission.
+# batch takes a few seconds of CPU per submission. Part 3's per-pass checks (blur-passes,
+# blur-pass-count) are shown to fail on the tap, sigma, full_res_offsets, swapped_subroutines and
+# pass_count submissions (check_reports.py), naming the first pass that goes wrong.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 set(EXPECT ${PROJECT_SOURCE_DIR}/tests/expect.sh)
 set(GRADE_TESTS ${CMAKE_CURRENT_SOURCE_DIR}/tests)

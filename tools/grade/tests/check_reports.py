@@ -20,17 +20,19 @@ EXPECTED = {
     "white_point": ("graded", [("pot.frame", "white-point", 9)]),
     "threshold": ("graded", [("pot.bloom-threshold", "bloom-threshold", 18)]),
     "weight": ("graded", [("pot.frame", "bloom-weight", 20)]),
-    "tap": ("graded", [("pot.blur", "blur-tap", 27)]),
-    "sigma": ("graded", [("pot.blur", "blur-sigma", 27)]),
+    "tap": ("graded", [("pot.blur", "blur-tap", 27), ("pot.blur-passes", "blur-tap", 27)]),
+    "sigma": ("graded", [("pot.blur", "blur-sigma", 27), ("pot.blur-passes", "blur-sigma", 27)]),
     "no_unmapping": ("graded", [("pot.frame", "missing-unmapping", 9)]),
     "log2_exp": ("graded", [("pot.frame", "log2-exp-mismatch", 9)]),
     "black_nan": ("graded", [("extremes.frame", "black-0-over-0", 9)]),
     "bloom_after": ("graded", [("pot.frame", "bloom-after-tonemap", 20)]),
-    "full_res_offsets": ("graded", [("pot.blur", "blur-full-resolution-offsets", 32)]),
+    "full_res_offsets": ("graded", [("pot.blur", "blur-full-resolution-offsets", 32),
+                                    ("pot.blur-passes", "blur-full-resolution-offsets", 32)]),
     "ceil_levels": ("graded", [("pot.luminance-levels", "ceil-log2-levels", 13)]),
-    "swapped_subroutines": ("graded", [("pot.blur", "swapped-subroutines", 32)]),
+    "swapped_subroutines": ("graded", [("pot.blur", "swapped-subroutines", 32),
+                                       ("pot.blur-passes", "swapped-subroutines", 33)]),
     "viewport_reset": ("graded", [("pot.frame", "viewport-reset", 35)]),
-    "pass_count": ("graded", [("pot.blur", "pass-count", 34)]),
+    "pass_count": ("graded", [("pot.blur", "pass-count", 34), ("pot.blur-pass-count", "pass-count", 34)]),
     "no_compile": ("build-failed", []),
     "shader_error": ("shader-error", []),
     "crash": ("crashed", []),
@@ -40,6 +42,13 @@ EXPECTED = {
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
             "crash": ["signal 11"], "loop": ["timed out after 20 s"]}
+# Per-pass checks (the capture of each blur pass): what their measurement or diagnosis must say.
+PASS_WORDS = {"swapped_subroutines": [("pot.blur-passes", "first failing pass: pass 1 vertical")],
+              "full_res_offsets": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
+              "tap": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
+              "pass_count": [("pot.blur-pass-count", "6 blur passes"), ("pot.blur-pass-count", "3 pairs instead of 5")],
+              **{name: [(f"{case}.blur-passes", "10 passes within tolerance") for case in ("pot", "npot", "extremes", "hot")]
+                 + [("pot.blur-pass-count", "10 blur passes")] for name in ("reference3", "shaders3", "equivalent")}}
 KEYS = {"id", "steps", "passed", "measured", "tolerance", "diagnosis"}
 
 
@@ -78,6 +87,14 @@ def check_report(report_dir, name, errors):
         for image in c.get("images", {}).values():
             if not os.path.exists(os.path.join(report_dir, name, image)):
                 fail(f"check {c['id']}: image {image} is missing")
+    # The per-pass checks exist, name the first pass that goes wrong, and count the passes drawn.
+    for check_id, words in PASS_WORDS.get(name, []):
+        if check_id not in checks:
+            fail(f"no check {check_id}")
+            continue
+        text = checks[check_id]["measured"] + " " + checks[check_id]["diagnosis"]
+        if words not in text:
+            fail(f"{check_id} does not say '{words}': {text[:300]}")
     if not failures:
         failed = [c["id"] for c in report["checks"] if not c["passed"]]
         if report["score"] != 100 or failed:
