@@ -49,9 +49,13 @@ RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits,
         const rlim_t cpu = static_cast<rlim_t>(limits.cpuSeconds);
         const rlimit cpuLimit{cpu, cpu + 1};
         ::setrlimit(RLIMIT_CPU, &cpuLimit);
+#ifndef __SANITIZE_ADDRESS__
+        // Not in an AddressSanitizer build: the sanitized programs it runs reserve terabytes of
+        // shadow address space at start-up and abort under any RLIMIT_AS (wall and CPU limits stay).
         const rlim_t bytes = static_cast<rlim_t>(limits.memoryMiB) * 1024 * 1024;
         const rlimit memoryLimit{bytes, bytes};
         ::setrlimit(RLIMIT_AS, &memoryLimit);
+#endif
         const rlimit noCore{0, 0};
         ::setrlimit(RLIMIT_CORE, &noCore);
         ::dup2(log, STDOUT_FILENO);
