@@ -4,6 +4,7 @@
 #include "t10/contract.hpp"
 #include "t10/gl.hpp"
 #include "t10/readback.hpp"
+#include "t10/views.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +28,8 @@ std::optional<SceneKey> readSceneKey() {
             SceneKey k;
             k.stored = last.data[0];
             k.rangeMapped = format != GL_R16F;
-            const double lnEps = std::log(contract::kEpsilon); // the range mapping of steps 5 and 9
-            k.ya = k.rangeMapped ? std::exp(k.stored * (std::log(contract::kWhitePoint) - lnEps) + lnEps) : std::exp(k.stored);
+            // GL_R16 holds the range mapping of steps 5 and 9 (undone with the tutorial's white point).
+            k.ya = k.rangeMapped ? views::keyFromMapped(k.stored, contract::kWhitePoint) : std::exp(k.stored);
             key = k;
         }
     }
