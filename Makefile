@@ -34,6 +34,9 @@ help:
 	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
+	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
+	@echo "make check PART=1|2|3 [DIR=folder]  build your part, grade it, say what to fix first (exit 0 only at 100)"
+	@echo "make run STAGE=student_partN  run your part (window, or headless into $(OUT)/); any stage name works"
 	@echo "make help   this list"
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
@@ -51,7 +54,9 @@ build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
 run: build
-	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+	@if [ -n "$(STAGE)" ]; then \
+	    $(MAKE) --no-print-directory run-stage; \
+	elif [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
 	    last=$$(tail -n 1 $(BUILD)/stages.txt); \
 	    echo "Opening $$last (Esc quits; WASD moves, right mouse button looks, scroll zooms)"; \
 	    $(BIN)/$$last; \
@@ -190,3 +195,48 @@ grade-deps-or-skip:
 	@$(MAKE) --no-print-directory grade-deps || echo "warning: FLIP could not be installed: the grader's tests will be skipped"
 
 test: grade-deps-or-skip
+
+# Students (tools/check/): `make student PART=N` starts student/partN/ (Part 1 from
+# tutorial10_part0_start/, Part N from the student's own part(N-1) or else the reference of Part N-1);
+# the build finds student/*/ (cmake/T10Student.cmake) and builds each only when asked, as
+# build/bin/student_<folder>; `make check PART=N [DIR=folder]` builds it, grades it against Part N and
+# prints what to fix first; `make run STAGE=student_partN` runs it. STUDENT_DIR= puts the folders
+# elsewhere (the build discovers T10_STUDENT_DIR, student/ unless configured otherwise).
+STUDENT_DIR ?= student
+CHECK_REPORT := $(BUILD)/check
+.PHONY: student check check-args run-stage
+student:
+	@python3 tools/check/new_student.py --part "$(PART)" --student-dir "$(STUDENT_DIR)" --source-root "$(CURDIR)"
+
+check-args:
+	@case "$(PART)" in 1|2|3) ;; *) echo 'usage: make check PART=1|2|3 [DIR=folder]   (make student PART=N creates the folder)'; exit 2 ;; esac
+	@dir="$(or $(DIR),$(STUDENT_DIR)/part$(PART))"; [ -d "$$dir" ] || { \
+	    echo "make check: $$dir/: no such folder (make student PART=$(PART) creates $(STUDENT_DIR)/part$(PART)/)"; exit 2; }
+
+# The student's program is built by its own target first (when the build has found the folder), so that
+# a compile error shows with the project's flags and names the file and line; then t10-grade grades it.
+check: check-args build grade-deps
+	@dir="$(or $(DIR),$(STUDENT_DIR)/part$(PART))"; full=$$(cd "$$dir" && pwd); \
+	target=$$(while read -r name folder; do [ "$$folder" = "$$full" ] && echo "$$name"; done < $(BUILD)/student_stages.txt); \
+	if [ -n "$$target" ]; then \
+	    cmake --build $(BUILD) --target $$target >$(BUILD)/student-build.log 2>&1 || { \
+	        grep -v '^\[\|^ninja: build stopped' $(BUILD)/student-build.log; \
+	        echo "make check: $$dir/ does not build: fix the first error above (file:line), then make check PART=$(PART) again"; exit 1; }; \
+	fi; \
+	tools/check/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir"
+
+# make run STAGE=name: one stage, reference or student, in a window or headless into $(OUT)/name.png.
+run-stage:
+	@known=$$(cat $(BUILD)/stages.txt; cut -d' ' -f1 $(BUILD)/student_stages.txt 2>/dev/null); \
+	echo "$$known" | grep -qx "$(STAGE)" || { \
+	    echo "make run: STAGE=$(STAGE): no such stage; choose one of:" $$known "(make student PART=N adds student_partN)"; exit 2; }
+	@cmake --build $(BUILD) --target $(STAGE) >$(BUILD)/stage-build.log 2>&1 || { \
+	    grep -v '^\[\|^ninja: build stopped' $(BUILD)/stage-build.log; echo "make run: $(STAGE) does not build: fix the first error above (file:line)"; exit 1; }
+	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
+	    echo "Opening $(STAGE) (Esc quits; WASD moves, right mouse button looks, scroll zooms; V cycles the views)"; \
+	    $(BIN)/$(STAGE); \
+	else \
+	    mkdir -p $(OUT); \
+	    echo "No display: rendering $(STAGE) headless into $(OUT)/"; \
+	    $(BIN)/$(STAGE) --headless --frames 1 --output $(OUT)/$(STAGE).png >/dev/null && echo "  $(OUT)/$(STAGE).png"; \
+	fi
