@@ -203,6 +203,9 @@ test: grade-deps-or-skip
 # prints what to fix first; `make run STAGE=student_partN` runs it. STUDENT_DIR= puts the folders
 # elsewhere (the build discovers T10_STUDENT_DIR, student/ unless configured otherwise).
 STUDENT_DIR ?= student
+# The compiler's own messages from a build log: ninja's progress lines and the failed command dropped,
+# paths relative to the repository root (ninja's are relative to $(BUILD)/).
+COMPILER_MESSAGES := sed -e '/^FAILED: /{N;d;}' -e '/^\[[0-9]*\/[0-9]*\] /d' -e '/^ninja: build stopped/d' -e 's\#\(^\|[[:space:]]\)\.\./\#\1\#g'
 CHECK_REPORT := $(BUILD)/check
 .PHONY: student check check-args run-stage
 student:
@@ -220,8 +223,9 @@ check: check-args build grade-deps
 	target=$$(while read -r name folder; do [ "$$folder" = "$$full" ] && echo "$$name"; done < $(BUILD)/student_stages.txt); \
 	if [ -n "$$target" ]; then \
 	    cmake --build $(BUILD) --target $$target >$(BUILD)/student-build.log 2>&1 || { \
-	        grep -v '^\[\|^ninja: build stopped' $(BUILD)/student-build.log; \
-	        echo "make check: $$dir/ does not build: fix the first error above (file:line), then make check PART=$(PART) again"; exit 1; }; \
+	        $(COMPILER_MESSAGES) $(BUILD)/student-build.log | head -n 40; \
+	        echo "make check: $$dir/ does not build: fix the first error above (file:line), then make check PART=$(PART) again"; \
+	        echo "(the compiler's whole output: $(BUILD)/student-build.log)"; exit 1; }; \
 	fi; \
 	tools/check/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir"
 
@@ -231,7 +235,7 @@ run-stage:
 	echo "$$known" | grep -qx "$(STAGE)" || { \
 	    echo "make run: STAGE=$(STAGE): no such stage; choose one of:" $$known "(make student PART=N adds student_partN)"; exit 2; }
 	@cmake --build $(BUILD) --target $(STAGE) >$(BUILD)/stage-build.log 2>&1 || { \
-	    grep -v '^\[\|^ninja: build stopped' $(BUILD)/stage-build.log; echo "make run: $(STAGE) does not build: fix the first error above (file:line)"; exit 1; }
+	    $(COMPILER_MESSAGES) $(BUILD)/stage-build.log | head -n 40; echo "make run: $(STAGE) does not build: fix the first error above (file:line)"; exit 1; }
 	@if [ -n "$$DISPLAY$$WAYLAND_DISPLAY" ]; then \
 	    echo "Opening $(STAGE) (Esc quits; WASD moves, right mouse button looks, scroll zooms; V cycles the views)"; \
 	    $(BIN)/$(STAGE); \

@@ -5,7 +5,7 @@
 #   - it is not part of `all` (EXCLUDE_FROM_ALL): a folder that does not build never breaks
 #     `make build`, the reference stages or `make test`; `make check` and `make run STAGE=` build it
 #     by name, so its compiler errors name the student's file and line;
-#   - warnings stay warnings (-Wno-error): a student's unused variable is not a failed check;
+#   - warnings stay warnings (t10_flags without -Werror): an unused variable does not stop the build;
 #   - it is not in T10_STAGES, so no golden, view or stage-rule test is registered for it.
 #
 # T10_STUDENT_DIR (default: student/ in the source tree) may point elsewhere, which is how the tests
@@ -17,6 +17,17 @@ set(T10_STUDENT_DIR ${PROJECT_SOURCE_DIR}/student CACHE PATH "Folder whose sub-f
 # CONFIGURE_DEPENDS makes the next build re-run it, so a folder created by `make student` is picked up
 # without a manual re-configure. The files inside each folder are still named explicitly.
 function(t10_add_student_stages)
+    # t10_flags without -Werror: the same warnings, definitions and (asan preset) sanitizers.
+    if(NOT TARGET t10_student_flags)
+        add_library(t10_student_flags INTERFACE)
+        foreach(property COMPILE_OPTIONS COMPILE_DEFINITIONS LINK_OPTIONS SOURCES)
+            get_target_property(values t10_flags INTERFACE_${property})
+            if(values)
+                list(REMOVE_ITEM values -Werror)
+                set_property(TARGET t10_student_flags PROPERTY INTERFACE_${property} ${values})
+            endif()
+        endforeach()
+    endif()
     file(GLOB children LIST_DIRECTORIES true CONFIGURE_DEPENDS ${T10_STUDENT_DIR}/*)
     set(names "")
     set(lines "")
@@ -32,8 +43,7 @@ function(t10_add_student_stages)
         endif()
         set(target student_${name})
         add_executable(${target} EXCLUDE_FROM_ALL ${child}/Tutorial10.cpp)
-        target_link_libraries(${target} PRIVATE t10_common t10_flags)
-        target_compile_options(${target} PRIVATE -Wno-error)
+        target_link_libraries(${target} PRIVATE t10_common t10_student_flags)
         target_compile_definitions(${target} PRIVATE
             T10_STAGE_NAME="${target}"
             T10_STAGE_SHADER_DIR="${child}")

@@ -107,16 +107,23 @@ def estimates(check):
     return lines
 
 
+def whole_part(numbers):
+    """A check that covers every step of its part (1-16, 1-25, 1-36: the frame against the reference,
+    buffers that are missing) says that something is wrong, not where."""
+    return len(numbers) >= 16 and sorted(set(numbers)) == list(range(1, max(numbers) + 1))
+
+
 def first_to_fix(checks):
     """The failed check to fix first: the one whose earliest step comes first in the tutorial (a later
-    check usually follows from it); report order breaks ties."""
+    check usually follows from it), checks that cover the whole part after those that name steps; report
+    order breaks ties."""
     failed = [c for c in checks if isinstance(c, dict) and c.get("passed") is not True]
     if not failed:
         return None, []
     def key(item):
         index, c = item
         numbers = failed_step_entries(c.get("steps")) or step_numbers(c.get("steps"))
-        return (min(numbers) if numbers else 10**6, index)
+        return (whole_part(numbers), min(numbers) if numbers else 10**6, index)
     ordered = [c for _, c in sorted(enumerate(failed), key=key)]
     return ordered[0], ordered[1:]
 
