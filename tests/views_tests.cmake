@@ -16,12 +16,24 @@ set(VIEWS_OF_tutorial10_part2_bloom final hdr luminance key bloom0 bloom1 ev nan
 set(VIEWS_OF_tutorial10_part3_gaussian final hdr luminance key bloom0 bloom1 blur ev nan)
 set(VIEWS_OF_extras ${VIEWS_OF_tutorial10_part3_gaussian})
 
+# A stage added to T10_STAGES without a list here (a copied folder, a new stage in the making) gets the
+# views every stage has, rendered, and no refusal tests: which views it lacks is not known until it is
+# listed. (A student's own version of a part belongs in student/, built without T10_STAGES: `make student`.)
+set(VIEWS_OF_EVERY_STAGE final hdr nan)
+
 foreach(stage IN LISTS T10_STAGES)
+    set(listed TRUE)
     if(NOT DEFINED VIEWS_OF_${stage})
-        message(FATAL_ERROR "views_tests.cmake: no view list for stage ${stage}")
+        message(STATUS "views_tests.cmake: stage ${stage} has no view list (VIEWS_OF_${stage}): only the views "
+                       "every stage has (${VIEWS_OF_EVERY_STAGE}) are tested for it")
+        set(VIEWS_OF_${stage} ${VIEWS_OF_EVERY_STAGE})
+        set(listed FALSE)
     endif()
     string(REPLACE ";" ", " has "${VIEWS_OF_${stage}}")
     foreach(view IN LISTS ALL_VIEWS)
+        if(NOT listed AND NOT view IN_LIST VIEWS_OF_${stage})
+            continue()
+        endif()
         if(view IN_LIST VIEWS_OF_${stage})
             # The image, the stage's textures (for the checks) and the caption line on stdout.
             add_test(NAME "view: ${stage} ${view}"

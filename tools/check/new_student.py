@@ -27,6 +27,12 @@ class Refused(Exception):
     pass
 
 
+def shown_path(path):
+    """A path as the student would type it: relative to the current folder when inside it."""
+    relative = os.path.relpath(path)
+    return path if relative.startswith("..") else relative
+
+
 def header(part, origin):
     title, steps = PARTS[part]
     return (f"// student_part{part}: my version of Tutorial 10, Part {part} \"{title}\" (steps {steps}).\n"
@@ -48,19 +54,19 @@ def replace_header(source, new_header):
 
 def create(part, student_dir, source_root):
     target = os.path.join(student_dir, f"part{part}")
-    shown = os.path.relpath(target)
+    shown = shown_path(target)
     if os.path.lexists(target):
         raise Refused(f"{shown}/ already exists: not overwritten, nothing was changed. To start Part {part} "
                       f"again, move or delete {shown}/ first.")
     own = os.path.join(student_dir, f"part{part - 1}")
     if part > 1 and os.path.isfile(os.path.join(own, HOST)):
-        source, origin = own, f"my own {os.path.relpath(own)}/"
-        note = f"from your own {os.path.relpath(own)}/ (Part {part - 1} as you wrote it)"
+        source, origin = own, f"my own {shown_path(own)}/"
+        note = f"from your own {shown_path(own)}/ (Part {part - 1} as you wrote it)"
         files = None  # everything in the student's folder comes along
     else:
         reference = REFERENCE[part - 1]
         source, origin = os.path.join(source_root, reference), f"the reference {reference}/"
-        why = "" if part == 1 else f"; there is no {os.path.relpath(own)}/{HOST} of your own"
+        why = "" if part == 1 else f"; there is no {shown_path(own)}/{HOST} of your own"
         note = f"from the reference {reference}/{why}"
         files = sorted(f for f in os.listdir(source) if f == HOST or f.endswith((".frag", ".vert")))
     if not os.path.isfile(os.path.join(source, HOST)):

@@ -170,11 +170,10 @@ def summarize(report, report_path, site_url=DEFAULT_SITE_URL):
         if isinstance(fix_first, dict):
             step = fix_first.get("step") if isinstance(fix_first.get("step"), int) else None
             wanted = text(fix_first.get("check"))
-            if wanted:
-                for c in checks:
-                    if isinstance(c, dict) and text(c.get("id")) == wanted:
-                        check = c
-                        others = [o for o in others if o is not c]
+            named = [c for c in ([check] + others if check is not None else others) if text(c.get("id")) == wanted]
+            if named:
+                others = [o for o in [check] + others if o is not named[0]]
+                check = named[0]
         if check is not None:
             numbers = failed_step_entries(check.get("steps")) or step_numbers(check.get("steps"))
             if step is None and numbers:
