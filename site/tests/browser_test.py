@@ -14,7 +14,12 @@ Checks, in both the light and the dark scheme:
   - the step numbers the reader sees (CSS counters, read back from the layout) run 1..N in order and
     match the step anchors;
   - every code excerpt has code;
-  - no request failed or went anywhere but the local server, and no script error was reported.
+  - no request failed or went anywhere but the local server, and no script error was reported;
+  - each --section ID (e.g. the students' "Check your work") is on the page, laid out with a height,
+    shows `make check PART=`, and, given as ID<OTHER, comes before the element OTHER (near the top);
+    the section "check-your-work" also shows `make student PART=` and `make run STAGE=student_part`.
+--plain is for pages without formulas, steps, code excerpts or rendered frames (building.html): those
+must then be absent or complete, not present.
 It writes full-page screenshots (<page>-light.png, <page>-dark.png) into --out.
 """
 
@@ -294,7 +299,48 @@ def rendered_step_numbers(browser, session):
     return found
 
 
-def check(state, page_html, expected_steps, allow_missing_from, label):
+SECTION_STATE = r"""
+((id, before) => {
+  const e = document.getElementById(id);
+  if (!e) return JSON.stringify(null);
+  // A heading's section runs to the next heading of its level or higher; another element is itself.
+  let text = e.textContent;
+  if (/^H[1-6]$/.test(e.tagName)) {
+    for (let n = e.nextElementSibling; n && !(/^H[1-6]$/.test(n.tagName) && n.tagName <= e.tagName);
+         n = n.nextElementSibling)
+      text += '\n' + n.textContent;
+  }
+  const other = before ? document.getElementById(before) : null;
+  return JSON.stringify({height: e.getBoundingClientRect().height, top: e.getBoundingClientRect().top,
+    text: text, beforeTop: other ? other.getBoundingClientRect().top : null, beforeFound: !!other});
+})
+"""
+
+# What each section must show; "check-your-work" carries the three commands.
+SECTION_TEXT = {"check-your-work": ["make student PART=", "make check PART=", "make run STAGE=student_part"]}
+
+
+def check_sections(browser, session, sections, label):
+    problems = []
+    for spec in sections:
+        sid, _, before = spec.partition("<")
+        state = json.loads(evaluate(browser, session, f"{SECTION_STATE}({json.dumps(sid)}, {json.dumps(before)})"))
+        if state is None:
+            problems.append(f"[{label}] section #{sid} missing")
+            continue
+        if state["height"] <= 0:
+            problems.append(f"[{label}] section #{sid} is not laid out (height {state['height']})")
+        for needed in SECTION_TEXT.get(sid, ["make check PART="]):
+            if needed not in state["text"]:
+                problems.append(f"[{label}] section #{sid} does not show '{needed}'")
+        if before and not state["beforeFound"]:
+            problems.append(f"[{label}] section #{sid}: #{before} missing, so its place cannot be checked")
+        elif before and state["top"] >= state["beforeTop"]:
+            problems.append(f"[{label}] section #{sid} comes after #{before}, not before it")
+    return problems
+
+
+def check(state, page_html, expected_steps, allow_missing_from, label, plain=False):
     problems = []
     inline, display = expected_formulas(page_html)
     if state["math"] != "done":
@@ -302,13 +348,13 @@ def check(state, page_html, expected_steps, allow_missing_from, label):
     if state["katex"] != inline + display or state["katexDisplay"] != display:
         problems.append(f"{state['katex']} formulas rendered ({state['katexDisplay']} displayed), "
                         f"the HTML has {inline + display} ({display} displayed)")
-    if inline + display == 0:
+    if inline + display == 0 and not plain:
         problems.append("the page has no formulas at all")
     if state["katexErrors"]:
         problems.append(f"KaTeX errors: {state['katexErrors']}")
     if state["rawMath"]:
         problems.append(f"raw math left in the text: {state['rawMath'][:5]}")
-    if not state["images"]:
+    if not state["images"] and not plain:
         problems.append("no images")
     for img in state["images"]:
         if not img["complete"] or img["w"] <= 0:
@@ -321,7 +367,7 @@ def check(state, page_html, expected_steps, allow_missing_from, label):
     wanted = [f"step-{n}" for n in range(1, expected_steps + 1)]
     if state["items"] != wanted:
         problems.append(f"step anchors are {state['items']}, expected step-1 .. step-{expected_steps} in order")
-    if not state["excerpts"]:
+    if not state["excerpts"] and not plain:
         problems.append("no code excerpts")
     for ex in state["excerpts"]:
         if ex["blocks"] == 0 or ex["empty"] or ex["chars"] == 0:
@@ -352,7 +398,7 @@ def screenshot(browser, session, path, width, view_height=900):
 
 
 def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, timeout=100,
-        schemes=("light", "dark")):
+        schemes=("light", "dark"), plain=False, sections=()):
     """Loads the page in each scheme; returns the list of problems found (empty: all good)."""
     started = time.monotonic()
     deadline = started + timeout
@@ -387,7 +433,8 @@ def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, tim
             browser.wait_event("Page.loadEventFired", session, timeout=60)
             evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
             state = json.loads(evaluate(browser, session, PAGE_STATE))
-            problems += check(state, page_html, steps, allow_missing_from, scheme)
+            problems += check(state, page_html, steps, allow_missing_from, scheme, plain)
+            problems += check_sections(browser, session, sections, scheme)
 
             numbers = rendered_step_numbers(browser, session)
             shown = [(anchor, text.rstrip(".")) for anchor, text in numbers]
@@ -445,9 +492,12 @@ def main():
                     help="steps from this one on may show the 'code not in the repository yet' note")
     ap.add_argument("--width", type=int, default=1280)
     ap.add_argument("--timeout", type=float, default=100, help="seconds for the whole test")
+    ap.add_argument("--plain", action="store_true", help="a page without formulas, steps, excerpts or frames")
+    ap.add_argument("--section", action="append", default=[], metavar="ID[<OTHER]",
+                    help="an element that must be shown (before #OTHER when given)")
     args = ap.parse_args()
     problems = run(args.site, args.page, args.chromium, args.out, args.steps, args.allow_missing_from,
-                   args.width, args.timeout)
+                   args.width, args.timeout, plain=args.plain, sections=args.section)
     if problems:
         raise Failure("\n  ".join([f"{len(problems)} problem(s) on {args.page}:"] + problems))
     print(f"ok: {args.page} renders completely in both schemes")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Proves that the browser check can fail: breaks a copy of the built site in five ways and runs the
+"""Proves that the browser check can fail: breaks a copy of the built site in six ways and runs the
 same checks on it (light scheme only); succeeds only if every breakage is reported.
 
   - one rendered frame deleted                      -> "image not loaded"
@@ -7,6 +7,7 @@ same checks on it (light scheme only); succeeds only if every breakage is report
   - the step counter reset by every list            -> "numbers shown in front of the steps"
   - a script from a CDN added to the page           -> "request outside the local server"
   - the code of one excerpt emptied                 -> "empty excerpt"
+  - the "Check your work" heading renamed           -> "section #check-your-work missing"
 """
 
 import argparse
@@ -20,7 +21,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import browser_test  # noqa: E402
 
 EXPECTED = ["image not loaded", "KaTeX did not run", "numbers shown in front of the steps",
-            "request outside the local server", "empty excerpt"]
+            "request outside the local server", "empty excerpt", "section #check-your-work missing"]
 
 
 def main():
@@ -52,11 +53,15 @@ def main():
     text, emptied = re.subn(r'(<figure class="excerpt".*?<code[^>]*>).*?(</code>)', r"\1\2", text, count=1, flags=re.S)
     if not emptied:
         raise browser_test.Failure(f"{args.page} has no excerpt to empty")
+    text, renamed = re.subn(r'id="check-your-work"', 'id="renamed-section"', text)
+    if not renamed:
+        raise browser_test.Failure(f"{args.page} has no #check-your-work section to break")
     with open(page, "w", encoding="utf-8") as f:
         f.write(text)
 
     problems = browser_test.run(broken, args.page, args.chromium, os.path.join(args.scratch, "out"),
-                                args.steps, timeout=args.timeout, schemes=("light",))
+                                args.steps, timeout=args.timeout, schemes=("light",),
+                                sections=("check-your-work<part-1-tone-mapping",))
     print("\n".join(p[:200] for p in problems))
     missed = [e for e in EXPECTED if not any(e in p for p in problems)]
     if missed:
