@@ -219,7 +219,7 @@ check-args:
 # The student's program is built by its own target first (when the build has found the folder), so that
 # a compile error shows with the project's flags and names the file and line; then t10-grade grades it.
 check: check-args build grade-deps
-	@dir="$(or $(DIR),$(STUDENT_DIR)/part$(PART))"; full=$$(cd "$$dir" && pwd); \
+	@dir="$(or $(DIR),$(STUDENT_DIR)/part$(PART))"; full=$$(cd "$$dir" && pwd -P); \
 	target=$$(while read -r name folder; do [ "$$folder" = "$$full" ] && echo "$$name"; done < $(BUILD)/student_stages.txt); \
 	if [ -n "$$target" ]; then \
 	    cmake --build $(BUILD) --target $$target >$(BUILD)/student-build.log 2>&1 || { \
