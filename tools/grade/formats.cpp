@@ -22,13 +22,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// PrairieLearn rejects results over 1 MB: images are added while the file stays under this many bytes,
-// which leaves room for the text (each text field is capped below).
+// PrairieLearn rejects results over 1 MB: images are added while the file stays under this many bytes
+// (each text field is capped below, so the text alone stays far under it).
 constexpr std::size_t kPrairieLearnLimit = 1000 * 1000;
-constexpr std::size_t kPrairieLearnImageBudget = 700 * 1000;
 // Student-facing text: a compiler's full log can run to megabytes; the report keeps all of it.
 constexpr std::size_t kMessageCap = 16 * 1024;
 constexpr std::size_t kTestOutputCap = 4 * 1024;
+// GitHub Classroom's reporter reads the base64 result from one environment variable, and Linux refuses
+// a single one over 128 KiB: a failed step's message is kept short (36 steps stay under 60 KiB).
+constexpr std::size_t kClassroomMessageCap = 1024;
 
 std::string capped(const std::string& text, std::size_t cap) {
     if (text.size() <= cap) return text;
@@ -99,7 +101,7 @@ std::string failures(const Report& report, const StepResult& step) {
     std::string out;
     for (const Check* c : step.checks)
         if (!c->passed) out += c->id + ": " + c->diagnosis + "\n";
-    return capped(out, kTestOutputCap);
+    return capped(out, kClassroomMessageCap);
 }
 
 std::string stepName(const Report& report, int step) {
@@ -176,6 +178,9 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
     }
     // Frames and heat-maps of failed image checks, once each (a FLIP check covers every step, so they
     // go in the top-level images, not in each test), as PNG data URIs while they fit.
+    // The text's size, with room for the note on left-out images and the images' labels.
+    const std::size_t textBytes = tests.str().size() + 3 * summary(report).size() + 8 * 1024;
+    const std::size_t imageBudget = kPrairieLearnLimit > textBytes ? kPrairieLearnLimit - textBytes : 0;
     std::string images, omitted;
     std::set<std::string> seen;  // a frame and a FLIP check of one case show the same student frame
     std::size_t imageBytes = 0;
@@ -190,11 +195,11 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
             const std::string url = "data:image/png;base64," + base64(readBinary(path.string()));
             const std::string label = c.id + ": " + what;
             if (!seen.insert(url).second) continue;
-            if (imageBytes + url.size() > kPrairieLearnImageBudget) {
+            if (imageBytes + url.size() + label.size() + 32 > imageBudget) {
                 omitted += (omitted.empty() ? "" : ", ") + label;
                 continue;
             }
-            imageBytes += url.size();
+            imageBytes += url.size() + label.size() + 32;
             images += std::string(images.empty() ? "" : ",") + "\n    {\"label\": " + jsonQuote(label) + ", \"url\": \"" + url + "\"}";
         }
     }
