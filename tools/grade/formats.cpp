@@ -105,8 +105,11 @@ std::string failures(const Report& report, const StepResult& step) {
 }
 
 std::string stepName(const Report& report, int step) {
+    if (step == kWholeFrame) return "Part " + std::to_string(report.part) + " whole frame";
     return "Part " + std::to_string(report.part) + " step " + std::to_string(step);
 }
+
+std::string stepNumber(int step) { return step == kWholeFrame ? "whole-frame" : std::to_string(step); }
 
 std::string readBinary(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -149,10 +152,10 @@ std::string gradescope(const Report& report) {
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
         out << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"number\": \""
-            << s.step << "\", \"score\": " << number(s.points, 2) << ", \"max_score\": " << number(s.maxPoints, 2)
+            << stepNumber(s.step) << "\", \"score\": " << number(s.points, 2) << ", \"max_score\": " << number(s.maxPoints, 2)
             << ", \"status\": \"" << (s.passed ? "passed" : "failed") << "\", \"output\": " << jsonQuote(stepOutput(report, s))
-            << ", \"output_format\": \"text\", \"visibility\": \"visible\", \"tags\": [\"part" << report.part << "\", \"step"
-            << s.step << "\"]}";
+            << ", \"output_format\": \"text\", \"visibility\": \"visible\", \"tags\": [\"part" << report.part << "\", \"step-"
+            << stepNumber(s.step) << "\"]}";
     }
     out << "\n  ]\n}\n";
     return out.str();
@@ -230,7 +233,7 @@ std::string classroom(const Report& report) {
         out << (i ? ", " : "") << "{\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"status\": \"" << testStatus
             << "\", \"score\": " << number(s.points, 2) << ", \"message\": " << jsonQuote(failures(report, s))
             << ", \"test_code\": "
-            << jsonQuote("t10-grade --part " + std::to_string(report.part) + ", step " + std::to_string(s.step))
+            << jsonQuote("t10-grade --part " + std::to_string(report.part) + ", " + stepName(report, s.step))
             << ", \"filename\": \"\", \"line_no\": 0, \"execution_time\": \"" << number(report.seconds, 1) << "s\"}";
     }
     out << "]}\n";
@@ -241,17 +244,20 @@ std::string classroom(const Report& report) {
 
 std::vector<StepResult> stepResults(const Report& report) {
     std::map<int, StepResult> byStep;
+    const std::vector<int> all = partSteps(report.part);
     if (report.checks.empty()) {
-        const std::vector<int> steps = partSteps(report.part);
-        for (int step : steps) byStep[step].maxPoints = 100.0 / static_cast<double>(steps.size());
+        for (int step : all) byStep[step].maxPoints = 100.0 / static_cast<double>(all.size());
     } else {
         const double perCheck = 100.0 / static_cast<double>(report.checks.size());
         for (const Check& c : report.checks) {
-            for (int step : c.steps) {
+            // A check of every step (FLIP against the reference stage) tells no step apart: it is a test
+            // of its own rather than a failure of every step.
+            const std::vector<int> steps = c.steps == all ? std::vector<int>{kWholeFrame} : c.steps;
+            for (int step : steps) {
                 StepResult& s = byStep[step];
                 s.checks.push_back(&c);
-                s.maxPoints += perCheck / static_cast<double>(c.steps.size());
-                if (c.passed) s.points += perCheck / static_cast<double>(c.steps.size());
+                s.maxPoints += perCheck / static_cast<double>(steps.size());
+                if (c.passed) s.points += perCheck / static_cast<double>(steps.size());
             }
         }
     }

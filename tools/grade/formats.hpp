@@ -2,8 +2,8 @@
 // Gradescope's results.json (gradescope-results.json), PrairieLearn's external grader results
 // (prairielearn-results.json) and the JSON GitHub Classroom's grading reporter reads
 // (classroom-result.json, and classroom-result.b64, its base64 as the reporter takes it from a step
-// output). Every platform test is one tutorial step: stepResults() is the one place that groups the
-// checks and gives each step its points.
+// output). Every platform test is one tutorial step (plus one for the whole frame): stepResults() is
+// the one place that groups the checks and gives each step its points.
 #pragma once
 #include "report.hpp"
 
@@ -12,8 +12,12 @@
 
 namespace t10::grade {
 
+// The test of the checks that cover every step of the part (FLIP of the whole frame against the
+// reference stage): it comes after the steps.
+constexpr int kWholeFrame = 1000;
+
 struct StepResult {
-    int step = 0;
+    int step = 0;                      // a tutorial step, or kWholeFrame
     std::vector<const Check*> checks;  // the checks that cover the step (empty when not graded)
     bool passed = false;               // every check of the step passed
     double points = 0.0;               // earned, rounded to 0.01
@@ -21,7 +25,7 @@ struct StepResult {
 };
 
 // Points per step, from today's score (the share of checks passed): each check is worth 100 / checks,
-// split evenly over the steps it covers. A report that was not graded (build-failed, crashed, ...)
+// split evenly over the steps it covers; a check covering every step goes to the kWholeFrame test. A report that was not graded (build-failed, crashed, ...)
 // has no checks: every step of the part gets an equal share and 0 points.
 std::vector<StepResult> stepResults(const Report& report);
 

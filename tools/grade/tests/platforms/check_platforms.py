@@ -27,6 +27,7 @@ FILES = {"gradescope": "gradescope-results.json", "prairielearn": "prairielearn-
 EXPECTED = {"reference3": ("graded", True, []), "weight": ("graded", False, [20]),
             "no_compile": ("build-failed", False, []), "crash": ("crashed", False, [])}
 EPSILON = 0.005
+WHOLE_FRAME = 1000  # formats.hpp kWholeFrame: the test of the checks covering every step (FLIP)
 
 
 def load(path):
@@ -48,7 +49,7 @@ def tests_of(fmt, data):
     """[(step, points, max points or None, passed)] from a platform's tests."""
     out = []
     for t in data["tests"]:
-        step = int(t["name"].rsplit(" ", 1)[1])
+        step = WHOLE_FRAME if t["name"].endswith(" whole frame") else int(t["name"].rsplit(" ", 1)[1])
         if fmt == "gradescope":
             out.append((step, t["score"], t["max_score"], t["status"] == "passed"))
         elif fmt == "prairielearn":
@@ -70,8 +71,16 @@ def check_results(fmt, report_dir, names):
             errors.append(f"{name}: report.json status {report['status']}, expected {status}")
         tests = tests_of(fmt, data)
         part_steps = {"1": 16, "2": 25, "3": 36}[str(report["part"])]
-        if sorted(t[0] for t in tests) != list(range(1, part_steps + 1)):
-            errors.append(f"{name}: the tests are not one per tutorial step 1-{part_steps}: {[t[0] for t in tests]}")
+        # Graded: a test per step some check covers, and one for the checks of every step (the whole
+        # frame); not graded (no checks): a test per step of the part, each worth an equal share.
+        every = list(range(1, part_steps + 1))
+        covered = set()
+        for c in report["checks"]:
+            covered |= {WHOLE_FRAME} if c["steps"] == every else set(c["steps"])
+        expected_steps = sorted(covered) if report["checks"] else every
+        if sorted(t[0] for t in tests) != expected_steps:
+            errors.append(f"{name}: the tests are not one per tutorial step the checks cover: {[t[0] for t in tests]}, "
+                          f"expected {expected_steps}")
         maxima = [t[2] for t in tests if t[2] is not None]
         if maxima and abs(sum(maxima) - 100) > EPSILON:
             errors.append(f"{name}: the steps' maxima add up to {sum(maxima)}, not 100")
@@ -92,6 +101,8 @@ def check_results(fmt, report_dir, names):
         for step in failing:
             if any(t[3] for t in tests if t[0] == step):
                 errors.append(f"{name}: step {step} passed although its mistake is in it")
+        if failing and any(not t[3] for t in tests if t[0] in (1, 2)):
+            errors.append(f"{name}: steps 1-2 failed for a mistake of step {failing}: a check of every step leaks into them")
         if status != "graded":
             text = {"gradescope": lambda: data["output"], "prairielearn": lambda: data["output"],
                     "classroom": lambda: data["tests"][0]["message"]}[fmt]()
