@@ -103,6 +103,9 @@ std::map<std::string, RosterEntry> readRoster(const std::string& path) {
         // GitHub Classroom's export leaves github_username empty for students who have not accepted.
         if (at(key).empty()) continue;
         if (at(id).empty()) throw Error(where + "no student id for '" + at(key) + "'");
+        // The id names the student's report folder.
+        if (at(id) == "." || at(id) == ".." || at(id).find_first_of("/\\") != std::string::npos)
+            throw Error(where + "student id '" + at(id) + "' cannot name a folder (no / or \\, not . or ..)");
         if (!roster.emplace(at(key), RosterEntry{at(id), at(name)}).second) throw Error(where + "'" + at(key) + "' appears twice");
         if (!ids.insert(at(id)).second) throw Error(where + "student id '" + at(id) + "' appears twice");
     }

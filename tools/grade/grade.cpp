@@ -9,8 +9,8 @@
 // reference and the frame with the reference stage (FLIP). Part 3 programs are built with
 // pass_capture.cpp, which records each blur pass beside the dump. Writes DIR/<submission>/report.json and
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
-// index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a report, 1 when the grader
-// failed, 2 on bad usage.
+// index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
+// report, 1 when the grader failed, 2 on bad usage.
 #include "checks.hpp"
 #include "class_index.hpp"
 #include "formats.hpp"

@@ -8,7 +8,7 @@ Checks that the batch is refused with a message saying how to name them; named f
 component (--name-from 1) or a pattern, it is graded and index.html and
 grades-lms.csv list every submission, with bob's failure of step 20 in the step table; with a roster
 (GitHub Classroom's export columns) the reports are named by student id; a name missing from the
-roster is refused. Exit 0 when all hold, 1 otherwise."""
+roster, or a student id that cannot name a folder, is refused. Exit 0 when all hold, 1 otherwise."""
 import csv
 import os
 import re
@@ -98,6 +98,10 @@ def main():
     grade(t10_grade, clazz, "--report", "../r4", "--name-from", "1", "--roster", "../short.csv", *folders, code=2,
           words=("'bob' is not in the roster",))
     grade(t10_grade, clazz, "--report", "../r5", "--name-from", "9", *folders, code=2, words=("has 3 components",))
+    with open(os.path.join(out, "escape.csv"), "w", encoding="utf-8") as f:
+        f.write("student_id,folder\n../../escaped,alice\ns1002,bob\n")
+    grade(t10_grade, clazz, "--report", "../r6", "--name-from", "1", "--roster", "../escape.csv", *folders, code=2,
+          words=("escape.csv:2: student id '../../escaped' cannot name a folder",))
     for error in errors:
         print(f"FAIL {error}")
     return 1 if errors else 0

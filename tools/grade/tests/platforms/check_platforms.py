@@ -101,8 +101,15 @@ def check_results(fmt, report_dir, names):
         for step in failing:
             if any(t[3] for t in tests if t[0] == step):
                 errors.append(f"{name}: step {step} passed although its mistake is in it")
-        if failing and any(not t[3] for t in tests if t[0] in (1, 2)):
-            errors.append(f"{name}: steps 1-2 failed for a mistake of step {failing}: a check of every step leaks into them")
+        # A step's test passes exactly when every check covering it passed (report.json).
+        if report["checks"]:
+            verdict = {}
+            for c in report["checks"]:
+                for step in ([WHOLE_FRAME] if c["steps"] == every else c["steps"]):
+                    verdict[step] = verdict.get(step, True) and c["passed"]
+            wrong = [t[0] for t in tests if t[0] in verdict and t[3] != verdict[t[0]]]
+            if wrong:
+                errors.append(f"{name}: the pass/fail of steps {wrong} disagrees with report.json's checks")
         if status != "graded":
             text = {"gradescope": lambda: data["output"], "prairielearn": lambda: data["output"],
                     "classroom": lambda: data["tests"][0]["message"]}[fmt]()
