@@ -162,8 +162,9 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
             << bins[b] * 20 * 10 / most << "px\"></span> " << bins[b] << "</td></tr>\n";
     }
     out << "</table>\n<h2>Failed steps</h2>\n<p>A cell is red where a check covering the step failed, green where all "
-        << "passed, grey where the submission was not graded (its status says why); \"frame\" is the whole frame against "
-        << "the reference stage (FLIP), which covers every step. Each name links to its report.</p>\n"
+        << "passed, white where no check covers the step, grey where the submission was not graded (its status says "
+        << "why); \"frame\" is the whole frame against the reference stage (FLIP), which covers every step. Each name "
+        << "links to its report.</p>\n"
         << "<table><tr><th>submission</th><th>score</th><th>status</th>";
     for (int step : steps) out << "<th>" << (step == kWholeFrame ? std::string("frame") : std::to_string(step)) << "</th>";
     out << "</tr>\n";
@@ -177,8 +178,10 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
             << htmlEscape(r->status) << "</td>";
         for (int step : steps) {
             const auto it = byStep.find(step);
-            if (it == byStep.end() || it->second.checks.empty()) {
+            if (r->status != "graded") {
                 out << "<td class=\"n\"></td>";
+            } else if (it == byStep.end()) {
+                out << "<td class=\"o\"></td>";
             } else if (it->second.passed) {
                 out << "<td class=\"p\"></td>";
             } else {

@@ -40,7 +40,7 @@ def index_rows(report):
         rows[row] = None
     for name in rows:
         line = re.search(r"<tr><td class=\"l\"><a href=\"" + re.escape(name) + r"/report.html\">(.*?)</tr>", page).group(1)
-        rows[name] = re.findall(r"<td class=\"([fpn])\"", line)
+        rows[name] = re.findall(r"<td class=\"([fpno])\"", line)
     return rows, page
 
 
