@@ -244,3 +244,25 @@ run-stage:
 	    echo "No display: rendering $(STAGE) headless into $(OUT)/"; \
 	    $(BIN)/$(STAGE) --headless --frames 1 --output $(OUT)/$(STAGE).png >/dev/null && echo "  $(OUT)/$(STAGE).png"; \
 	fi
+
+# Grading on the platforms courses use (tools/grade/platforms; site/instructors.md): `make grader`
+# installs and builds only what grading needs (t10-grade, the reference stages, FLIP); `make gradescope
+# PART=N` packs out/gradescope/partN/autograder.zip; `make prairielearn PART=N` writes
+# out/prairielearn/partN/ (the entrypoint and an info.json snippet).
+GRADER_PACKAGES := $(filter-out jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments xvfb xauth,$(PACKAGES)) python3-venv
+.PHONY: grader gradescope prairielearn platform-part
+grader: PACKAGES := $(GRADER_PACKAGES)
+grader: configure grade-deps
+	cmake --build $(BUILD) -j $(JOBS) --target t10-grade
+
+platform-part:
+	@case "$(PART)" in 1|2|3) ;; *) echo 'usage: make gradescope|prairielearn PART=1|2|3'; exit 2;; esac
+
+gradescope: platform-part
+	python3 tools/grade/platforms/package.py gradescope $(PART) . $(OUT)/gradescope/part$(PART)
+
+prairielearn: platform-part
+	python3 tools/grade/platforms/package.py prairielearn $(PART) . $(OUT)/prairielearn/part$(PART)
+
+# The platforms' tests validate the Classroom workflow's YAML.
+test: PACKAGES += python3-yaml

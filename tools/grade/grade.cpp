@@ -1,5 +1,6 @@
 // t10-grade: grades students' versions of a Tutorial 10 stage.
-//   t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout S] [--cache DIR] SUBMISSION...
+//   t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout S] [--cache DIR] [--format F]...
+//             [--name-from N|PATTERN] [--roster CSV] SUBMISSION...
 // A submission is a folder with any of Tutorial10.cpp and the part's shaders; what it lacks comes
 // from the reference stage. Its host code is built against common/ in a build folder of its own,
 // then it renders four cases under limits (a power-of-two size with one camera, a
@@ -7,9 +8,12 @@
 // above the white point, and one hot pixel), and checks.hpp compares every buffer with the CPU
 // reference and the frame with the reference stage (FLIP). Part 3 programs are built with
 // pass_capture.cpp, which records each blur pass beside the dump. Writes DIR/<submission>/report.json and
-// report.html and DIR/gradebook.csv. Exit 0 when every submission got a report, 1 when the grader
-// failed, 2 on bad usage.
+// report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
+// index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
+// report, 1 when the grader failed, 2 on bad usage.
 #include "checks.hpp"
+#include "class_index.hpp"
+#include "formats.hpp"
 #include "report.hpp"
 #include "run_limited.hpp"
 
@@ -78,20 +82,62 @@ struct Config {
     double timeout = 60.0;
     std::string cacheDir = T10_GRADE_CACHE_DIR;
     std::vector<std::string> submissions;
+    std::vector<std::string> formats;  // platform results (formats.hpp)
+    std::string nameFrom;              // how a submission is named: "" (its last folder), a component index or a pattern
+    std::string roster;                // a CSV mapping those names to student ids (class_index.hpp)
+    std::vector<std::string> names;    // per submission: its report folder's name
+    std::map<std::string, std::string> studentNames;  // per name: the student's name from the roster
 };
 
 constexpr const char* kUsage =
-    "usage: t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout SECONDS] [--cache DIR] SUBMISSION...\n"
+    "usage: t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout SECONDS] [--cache DIR] [--format F]... [--name-from N|PATTERN]\n"
+    "                 [--roster CSV] SUBMISSION...\n"
     "  SUBMISSION  a folder with any of Tutorial10.cpp and the part's shaders (the rest comes from the reference)\n"
     "  --report    where report.json/report.html per submission and gradebook.csv go (default grade-report)\n"
     "  --jobs      submissions graded in parallel (default 1)\n"
     "  --timeout   wall-clock limit of one render, in seconds (default 60); builds get 300\n"
-    "  --cache     where built submissions and the reference renders are kept (default " T10_GRADE_CACHE_DIR ")\n";
+    "  --cache     where built submissions and the reference renders are kept (default " T10_GRADE_CACHE_DIR ")\n"
+    "  --format    also write a platform's result beside each report.json: gradescope, prairielearn or classroom\n"
+    "              (repeatable)\n"
+    "  --name-from name each submission after a component of its path: N counts from the start (1 = the first\n"
+    "              folder; -1, the default, is the last), or a regular expression whose first group (or whole\n"
+    "              match) is the name, e.g. --name-from '([^/]+)/student'\n"
+    "  --roster    a CSV (columns folder or github_username, student_id or identifier, optional name): names\n"
+    "              each submission by the student id of its name; writes index.html and grades-lms.csv by id\n";
 
 std::string submissionName(const std::string& path) {
     fs::path p = fs::path(path).lexically_normal();
     if (p.filename().empty()) p = p.parent_path();
     return p.filename().string();
+}
+
+// The name --name-from gives the submission at `path`; throws UsageError when there is none.
+std::string nameFrom(const std::string& path, const std::string& how) {
+    if (how.empty()) return submissionName(path);
+    std::string name;
+    if (std::regex_match(how, std::regex("-?[0-9]+"))) {
+        std::vector<std::string> parts;
+        for (const fs::path& part : fs::path(path).lexically_normal())
+            if (!part.empty() && part != "." && part != fs::path(path).root_path()) parts.push_back(part.string());
+        const long index = std::strtol(how.c_str(), nullptr, 10);
+        const long at = index > 0 ? index - 1 : static_cast<long>(parts.size()) + index;
+        if (index == 0 || at < 0 || at >= static_cast<long>(parts.size()))
+            throw UsageError("--name-from " + how + ": " + path + " has " + std::to_string(parts.size()) + " components");
+        name = parts[static_cast<std::size_t>(at)];
+    } else {
+        std::regex pattern;
+        try {
+            pattern = std::regex(how);
+        } catch (const std::regex_error& error) {
+            throw UsageError("--name-from " + how + ": not a component index nor a valid regular expression (" + error.what() + ")");
+        }
+        std::smatch match;
+        if (!std::regex_search(path, match, pattern)) throw UsageError("--name-from " + how + ": does not match " + path);
+        name = match.size() > 1 && match[1].matched ? match[1].str() : match[0].str();
+    }
+    if (name.empty() || name == "." || name == ".." || name.find('/') != std::string::npos)
+        throw UsageError("--name-from " + how + ": gives " + path + " the name '" + name + "', which cannot name a report folder");
+    return name;
 }
 
 Config parse(int argc, char** argv) {
@@ -127,6 +173,16 @@ Config parse(int argc, char** argv) {
             config.timeout = number(arg, value(), 1, 3600);
         } else if (arg == "--cache") {
             config.cacheDir = value();
+        } else if (arg == "--format") {
+            const std::string v = value();
+            const std::vector<std::string>& known = formatNames();
+            if (std::find(known.begin(), known.end(), v) == known.end())
+                throw UsageError("--format " + v + ": choose gradescope, prairielearn or classroom");
+            if (std::find(config.formats.begin(), config.formats.end(), v) == config.formats.end()) config.formats.push_back(v);
+        } else if (arg == "--name-from") {
+            config.nameFrom = value();
+        } else if (arg == "--roster") {
+            config.roster = value();
         } else if (arg.rfind("--", 0) == 0) {
             throw UsageError("unknown option " + arg);
         } else {
@@ -135,12 +191,32 @@ Config parse(int argc, char** argv) {
     }
     if (config.part == 0) throw UsageError("--part is required (1, 2 or 3)");
     if (config.submissions.empty()) throw UsageError("no SUBMISSION folder given");
-    std::set<std::string> names;
+    std::map<std::string, RosterEntry> roster;
+    if (!config.roster.empty()) {
+        try {
+            roster = readRoster(config.roster);
+        } catch (const Error& error) {
+            throw UsageError(error.what());
+        }
+    }
+    std::map<std::string, std::string> names;  // name -> the submission that has it
     const fs::path report = fs::weakly_canonical(fs::absolute(config.reportDir));
     for (const std::string& s : config.submissions) {
         if (!fs::is_directory(s)) throw UsageError(s + ": not a folder");
-        const std::string name = submissionName(s);
-        if (!names.insert(name).second) throw UsageError(s + ": two submissions are named '" + name + "'");
+        std::string name = nameFrom(s, config.nameFrom);
+        if (!config.roster.empty()) {
+            const auto entry = roster.find(name);
+            if (entry == roster.end()) throw UsageError(s + ": '" + name + "' is not in the roster " + config.roster);
+            name = entry->second.studentId;
+            if (!entry->second.name.empty()) config.studentNames[name] = entry->second.name;
+        }
+        if (!names.emplace(name, s).second) {
+            throw UsageError("two submissions are named '" + name + "' (" + names[name] + " and " + s +
+                             "): name them after another component of their path with --name-from N (1 = the first "
+                             "folder, -1 = the last) or --name-from PATTERN (a regular expression whose first group is "
+                             "the name), or by student id with --roster CSV");
+        }
+        config.names.push_back(name);
         // The report folder of a submission is emptied first: it must not be, or hold, the submission.
         const fs::path folder = fs::weakly_canonical(fs::absolute(s));
         const fs::path target = report / name;
@@ -269,7 +345,7 @@ public:
         }
     }
 
-    Report grade(const std::string& submission) const;
+    Report grade(const std::string& submission, const std::string& name) const;
 
 private:
     void prepareInputs();
@@ -438,10 +514,10 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     return check;
 }
 
-Report Grader::grade(const std::string& submission) const {
+Report Grader::grade(const std::string& submission, const std::string& name) const {
     const auto start = std::chrono::steady_clock::now();
     Report report;
-    report.submission = submissionName(submission);
+    report.submission = name;
     report.path = submission;
     report.part = config_.part;
     const fs::path out = fs::absolute(config_.reportDir) / report.submission;
@@ -551,7 +627,7 @@ int main(int argc, char** argv) {
         auto worker = [&]() {
             for (std::size_t i = next++; i < config.submissions.size(); i = next++) {
                 try {
-                    reports[i] = grader.grade(config.submissions[i]);
+                    reports[i] = grader.grade(config.submissions[i], config.names[i]);
                     const std::lock_guard<std::mutex> lock(printing);
                     std::cout << reports[i].submission << ": " << reports[i].status << ", score " << reports[i].score()
                               << " (" << reports[i].passedCount() << "/" << reports[i].checks.size() << " checks) in "
@@ -559,9 +635,18 @@ int main(int argc, char** argv) {
                 } catch (const std::exception& error) {
                     const std::lock_guard<std::mutex> lock(printing);
                     std::cerr << "t10-grade: error: grading " << config.submissions[i] << ": " << error.what() << "\n";
-                    reports[i].submission = submissionName(config.submissions[i]);
+                    reports[i].submission = config.names[i];
+                    reports[i].path = config.submissions[i];
                     reports[i].part = config.part;
                     reports[i].status = "grader-error";
+                    reports[i].message = std::string("the grader failed: ") + error.what();
+                    failed = true;
+                }
+                try {
+                    writeFormats(reports[i], config.formats, (fs::path(config.reportDir) / config.names[i]).string());
+                } catch (const std::exception& error) {
+                    const std::lock_guard<std::mutex> lock(printing);
+                    std::cerr << "t10-grade: error: writing the results of " << config.submissions[i] << ": " << error.what() << "\n";
                     failed = true;
                 }
             }
@@ -571,12 +656,27 @@ int main(int argc, char** argv) {
         for (std::thread& t : threads) t.join();
         const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
         writeGradebook(reports, gradebook);
-        std::cout << "wrote " << gradebook << " and a report per submission in " << config.reportDir << "/\n";
+        writeClassIndex(reports, config.studentNames, config.reportDir);
+        std::cout << "wrote " << gradebook << ", index.html, grades-lms.csv and a report per submission in " << config.reportDir << "/\n";
         // A submission the grader could not grade (status grader-error in the gradebook) is the
         // grader's failure, not the student's.
         return failed ? 1 : 0;
     } catch (const std::exception& error) {
         std::cerr << "t10-grade: error: " << error.what() << "\n";
+        // The platforms still get a result for each submission: the grader's failure, not the student's.
+        for (std::size_t i = 0; i < config.submissions.size() && !config.formats.empty(); ++i) {
+            Report report;
+            report.submission = config.names[i];
+            report.path = config.submissions[i];
+            report.part = config.part;
+            report.status = "grader-error";
+            report.message = std::string("the grader failed: ") + error.what();
+            try {
+                writeFormats(report, config.formats, (fs::path(config.reportDir) / config.names[i]).string());
+            } catch (const std::exception& again) {
+                std::cerr << "t10-grade: error: " << again.what() << "\n";
+            }
+        }
         return 1;
     }
 }

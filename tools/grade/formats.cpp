@@ -1,0 +1,375 @@
+// The platforms' result files; see formats.hpp. Contracts as their public documentation states them:
+// Gradescope's autograder results.json, PrairieLearn's external grading results (1 MB at most) and
+// GitHub Classroom's autograding-grading-reporter (a step output holding base64 JSON, version 1).
+#include "formats.hpp"
+
+#include "t10/error.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace t10::grade {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// PrairieLearn rejects results over 1 MB: images are added while the file stays under this many bytes
+// (each text field is capped below, so the text alone stays far under it).
+constexpr std::size_t kPrairieLearnLimit = 1000 * 1000;
+// Student-facing text: a compiler's full log can run to megabytes; the report keeps all of it.
+constexpr std::size_t kMessageCap = 16 * 1024;
+constexpr std::size_t kTestOutputCap = 4 * 1024;
+// GitHub Classroom's reporter reads the base64 result from one environment variable, and Linux refuses
+// a single one over 128 KiB: a failed step's message is kept short (36 steps stay under 60 KiB).
+constexpr std::size_t kClassroomMessageCap = 1024;
+
+std::string capped(const std::string& text, std::size_t cap) {
+    if (text.size() <= cap) return text;
+    return text.substr(0, cap) + "\n[... " + std::to_string(text.size() - cap) + " more bytes: see report.html]";
+}
+
+std::string number(double value, int decimals) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    return buffer;
+}
+
+double hundredths(double value) { return std::round(value * 100.0) / 100.0; }
+
+std::string stepsText(const std::vector<int>& steps) {
+    std::string out;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        std::size_t j = i;
+        while (j + 1 < steps.size() && steps[j + 1] == steps[j] + 1) ++j;
+        out += (out.empty() ? "" : ", ") + std::to_string(steps[i]);
+        if (j > i) out += "-" + std::to_string(steps[j]);
+        i = j;
+    }
+    return out;
+}
+
+// What the student reads first: the status, the score and every failed check with its diagnosis.
+std::string summary(const Report& report) {
+    std::ostringstream out;
+    out << "Tutorial 10 Part " << report.part << ": " << report.status << ", score " << report.score() << "/100";
+    if (report.status == "graded") {
+        out << " (" << report.passedCount() << " of " << report.checks.size() << " checks passed).\n";
+        for (const Check& c : report.checks) {
+            if (c.passed) continue;
+            out << "FAILED " << c.id << " (steps " << stepsText(c.steps) << "): " << c.diagnosis << "\n";
+        }
+    } else {
+        out << ".\n" << report.message << "\n";
+    }
+    return capped(out.str(), kMessageCap);
+}
+
+std::string checkText(const Check& c) {
+    std::ostringstream out;
+    if (c.passed) {
+        out << "passed " << c.id << ": " << c.measured << "\n";
+    } else {
+        out << "FAILED " << c.id << ": " << c.diagnosis << "\n  measured: " << c.measured << "\n  tolerance: " << c.tolerance
+            << "\n";
+    }
+    return out.str();
+}
+
+std::string stepOutput(const Report& report, const StepResult& step) {
+    if (step.checks.empty()) return "not graded: the submission's status is " + report.status + " (see the summary)";
+    std::string out;
+    // Failures first: they are what the student acts on.
+    for (const Check* c : step.checks)
+        if (!c->passed) out += checkText(*c);
+    for (const Check* c : step.checks)
+        if (c->passed) out += checkText(*c);
+    return capped(out, kTestOutputCap);
+}
+
+// Only what failed: the reporter prints the message of every failed test in the job's log.
+std::string failures(const Report& report, const StepResult& step) {
+    if (step.checks.empty()) return "not graded: the submission's status is " + report.status;
+    std::string out;
+    for (const Check* c : step.checks)
+        if (!c->passed) out += c->id + ": " + c->diagnosis + "\n";
+    return capped(out, kClassroomMessageCap);
+}
+
+std::string stepName(const Report& report, int step) {
+    if (step == kWholeFrame) return "Part " + std::to_string(report.part) + " whole frame";
+    return "Part " + std::to_string(report.part) + " step " + std::to_string(step);
+}
+
+std::string stepNumber(int step) { return step == kWholeFrame ? "whole-frame" : std::to_string(step); }
+
+std::string readBinary(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    std::size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                           static_cast<unsigned char>(bytes[i + 2]);
+        out += kAlphabet[(v >> 18) & 63];
+        out += kAlphabet[(v >> 12) & 63];
+        out += kAlphabet[(v >> 6) & 63];
+        out += kAlphabet[v & 63];
+    }
+    if (i < bytes.size()) {
+        const bool two = i + 1 < bytes.size();
+        const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (two ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0u);
+        out += kAlphabet[(v >> 18) & 63];
+        out += kAlphabet[(v >> 12) & 63];
+        out += two ? kAlphabet[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+std::string gradescope(const Report& report) {
+    std::ostringstream out;
+    // `score` is given, so Gradescope shows it rather than the sum of the tests' (they differ by the
+    // rounding: report.json's score is rounded down, the steps' points to 0.01).
+    out << "{\n  \"score\": " << report.score() << ",\n  \"execution_time\": " << static_cast<long>(std::lround(report.seconds))
+        << ",\n  \"output\": " << jsonQuote(summary(report)) << ",\n  \"output_format\": \"text\""
+        << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
+    const std::vector<StepResult> steps = stepResults(report);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const StepResult& s = steps[i];
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"number\": \""
+            << stepNumber(s.step) << "\", \"score\": " << number(s.points, 2) << ", \"max_score\": " << number(s.maxPoints, 2)
+            << ", \"status\": \"" << (s.passed ? "passed" : "failed") << "\", \"output\": " << jsonQuote(stepOutput(report, s))
+            << ", \"output_format\": \"text\", \"visibility\": \"visible\", \"tags\": [\"part" << report.part << "\", \"step-"
+            << stepNumber(s.step) << "\"]}";
+    }
+    out << "\n  ]\n}\n";
+    return out.str();
+}
+
+std::string prairieLearn(const Report& report, const std::string& dir) {
+    const bool gradable = report.status != "grader-error";
+    std::ostringstream tests;
+    const std::vector<StepResult> steps = stepResults(report);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const StepResult& s = steps[i];
+        std::string ids, message;
+        for (const Check* c : s.checks) {
+            ids += (ids.empty() ? "" : ", ") + c->id;
+            if (!c->passed) message += (message.empty() ? "" : "\n") + c->id + ": " + c->diagnosis;
+        }
+        if (s.checks.empty()) message = "not graded (" + report.status + ")";
+        tests << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"description\": "
+              << jsonQuote(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << number(s.points, 2)
+              << ", \"max_points\": " << number(s.maxPoints, 2) << ", \"message\": "
+              << jsonQuote(capped(message.empty() ? "passed" : message, kTestOutputCap)) << ", \"output\": "
+              << jsonQuote(stepOutput(report, s)) << "}";
+    }
+    // Frames and heat-maps of failed image checks, once each (a FLIP check covers every step, so they
+    // go in the top-level images, not in each test), as PNG data URIs while they fit.
+    // The text's size, with room for the note on left-out images and the images' labels.
+    const std::size_t textBytes = tests.str().size() + 3 * summary(report).size() + 8 * 1024;
+    const std::size_t imageBudget = kPrairieLearnLimit > textBytes ? kPrairieLearnLimit - textBytes : 0;
+    std::string images, omitted;
+    std::set<std::string> seen;  // a frame and a FLIP check of one case show the same student frame
+    std::size_t imageBytes = 0;
+    for (const Check& c : report.checks) {
+        if (c.passed || c.heatMap.empty()) continue;
+        const std::pair<const char*, const std::string*> files[] = {
+            {"frame", &c.studentImage}, {"reference", &c.referenceImage}, {"difference heat-map", &c.heatMap}};
+        for (const auto& [what, file] : files) {
+            std::error_code error;
+            const fs::path path = fs::path(dir) / *file;
+            if (file->empty() || !fs::is_regular_file(path, error)) continue;
+            const std::string url = "data:image/png;base64," + base64(readBinary(path.string()));
+            const std::string label = c.id + ": " + what;
+            if (!seen.insert(url).second) continue;
+            if (imageBytes + url.size() + label.size() + 32 > imageBudget) {
+                omitted += (omitted.empty() ? "" : ", ") + label;
+                continue;
+            }
+            imageBytes += url.size() + label.size() + 32;
+            images += std::string(images.empty() ? "" : ",") + "\n    {\"label\": " + jsonQuote(label) + ", \"url\": \"" + url + "\"}";
+        }
+    }
+    std::string output = summary(report);
+    if (!omitted.empty()) output += "\nImages left out to keep the result under 1 MB: " + omitted + " (they are in report.html).";
+    std::ostringstream out;
+    out << "{\n  \"gradable\": " << (gradable ? "true" : "false") << ",\n  \"score\": " << number(report.score() / 100.0, 2);
+    if (!gradable) out << ",\n  \"format_errors\": [" << jsonQuote(capped(report.message, kMessageCap)) << "]";
+    out << ",\n  \"message\": " << jsonQuote(output.substr(0, output.find('\n'))) << ",\n  \"output\": " << jsonQuote(output)
+        << ",\n  \"images\": [" << images << (images.empty() ? "" : "\n  ") << "],\n  \"tests\": [" << tests.str()
+        << "\n  ]\n}\n";
+    std::string text = out.str();
+    if (text.size() > kPrairieLearnLimit) throw Error("the PrairieLearn result of " + report.submission + " is " +
+                                                      std::to_string(text.size()) + " bytes, over PrairieLearn's 1 MB");
+    return text;
+}
+
+std::string classroom(const Report& report) {
+    // status: pass only at full marks; error for the grader's own failure; fail otherwise (the
+    // reporter fails its step on fail or error: grade.yml decides whether the job fails).
+    const std::string status = report.status == "grader-error" ? "error" : report.score() == 100 ? "pass" : "fail";
+    std::ostringstream out;
+    out << "{\"version\": 1, \"status\": \"" << status << "\", \"max_score\": 100, \"tests\": [";
+    const std::vector<StepResult> steps = stepResults(report);
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const StepResult& s = steps[i];
+        const std::string testStatus = report.status == "grader-error" ? "error" : s.passed ? "pass" : "fail";
+        out << (i ? ", " : "") << "{\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"status\": \"" << testStatus
+            << "\", \"score\": " << number(s.points, 2) << ", \"message\": " << jsonQuote(failures(report, s))
+            << ", \"test_code\": "
+            << jsonQuote("t10-grade --part " + std::to_string(report.part) + ", " + stepName(report, s.step))
+            << ", \"filename\": \"\", \"line_no\": 0, \"execution_time\": \"" << number(report.seconds, 1) << "s\"}";
+    }
+    out << "]}\n";
+    return out.str();
+}
+
+} // namespace
+
+std::vector<StepResult> stepResults(const Report& report) {
+    std::map<int, StepResult> byStep;
+    const std::vector<int> all = partSteps(report.part);
+    if (report.checks.empty()) {
+        for (int step : all) byStep[step].maxPoints = 100.0 / static_cast<double>(all.size());
+    } else {
+        const double perCheck = 100.0 / static_cast<double>(report.checks.size());
+        for (const Check& c : report.checks) {
+            // A check of every step (FLIP against the reference stage) tells no step apart: it is a test
+            // of its own rather than a failure of every step.
+            const std::vector<int> steps = c.steps == all ? std::vector<int>{kWholeFrame} : c.steps;
+            for (int step : steps) {
+                StepResult& s = byStep[step];
+                s.checks.push_back(&c);
+                s.maxPoints += perCheck / static_cast<double>(steps.size());
+                if (c.passed) s.points += perCheck / static_cast<double>(steps.size());
+            }
+        }
+    }
+    // Rounded to 0.01 cumulatively, so that the steps' maxima add up to exactly 100.00 and their points
+    // to the exact share of checks passed (within 0.01: a step cannot earn more than its maximum).
+    std::vector<StepResult> out;
+    double maxSoFar = 0.0, pointsSoFar = 0.0;
+    for (auto& [step, s] : byStep) {
+        s.step = step;
+        s.passed = !s.checks.empty() && std::all_of(s.checks.begin(), s.checks.end(), [](const Check* c) { return c->passed; });
+        const double maxRounded = hundredths(maxSoFar + s.maxPoints) - hundredths(maxSoFar);
+        const double pointsRounded = hundredths(pointsSoFar + s.points) - hundredths(pointsSoFar);
+        maxSoFar += s.maxPoints;
+        pointsSoFar += s.points;
+        s.maxPoints = hundredths(maxRounded);
+        s.points = s.passed ? s.maxPoints : std::min(hundredths(pointsRounded), s.maxPoints);
+        out.push_back(s);
+    }
+    return out;
+}
+
+const std::vector<std::string>& formatNames() {
+    static const std::vector<std::string> kNames{"gradescope", "prairielearn", "classroom"};
+    return kNames;
+}
+
+void writeFormats(const Report& report, const std::vector<std::string>& formats, const std::string& dir) {
+    if (formats.empty()) return;
+    std::error_code error;
+    fs::create_directories(dir, error);
+    if (error) throw Error(dir + ": cannot create: " + error.message());
+    for (const std::string& format : formats) {
+        if (format == "gradescope") {
+            writeFileAtomically(dir + "/gradescope-results.json", gradescope(report));
+        } else if (format == "prairielearn") {
+            writeFileAtomically(dir + "/prairielearn-results.json", prairieLearn(report, dir));
+        } else if (format == "classroom") {
+            const std::string json = classroom(report);
+            writeFileAtomically(dir + "/classroom-result.json", json);
+            writeFileAtomically(dir + "/classroom-result.b64", base64(json) + "\n");
+        } else {
+            throw Error("unknown result format " + format);
+        }
+    }
+}
+
+std::string jsonQuote(const std::string& text) {
+    std::string out = "\"";
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        // The length of a well-formed UTF-8 sequence starting here, or 0.
+        std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        if (length > 1) {
+            if (i + length > text.size() || (length == 2 && c < 0xC2)) length = 0;
+            for (std::size_t k = 1; length && k < length; ++k)
+                if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 0;
+        }
+        if (length == 0) {
+            out += "\\ufffd";
+            ++i;
+            continue;
+        }
+        if (length > 1) {
+            out.append(text, i, length);
+            i += length;
+            continue;
+        }
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        case '\r': out += "\\r"; break;
+        default:
+            if (c < 0x20 || c == 0x7F) {
+                char buffer[8];
+                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+                out += buffer;
+            } else {
+                out += static_cast<char>(c);
+            }
+        }
+        ++i;
+    }
+    return out + "\"";
+}
+
+std::string htmlEscape(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        switch (c) {
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '&': out += "&amp;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+    const std::string temporary = path + ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary);
+        if (!out) throw Error(temporary + ": cannot create: " + std::strerror(errno));
+        out << content;
+        if (!out.flush()) throw Error(temporary + ": cannot write: " + std::strerror(errno));
+    }
+    std::error_code error;
+    fs::rename(temporary, path, error);
+    if (error) throw Error(path + ": cannot rename into place: " + error.message());
+}
+
+} // namespace t10::grade

@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Validates a Gradescope autograder results.json against the contract of Gradescope's autograder
+specification: the known top-level and test fields, their types, the enumerations of output_format,
+visibility and status, scores within [0, max_score], and the size limit we hold it to.
+
+  validate_gradescope.py RESULTS_JSON...     prints every fault; exit 0 when there is none, 1 otherwise
+validate(data, raw) is used by check_platforms.py."""
+import json
+import sys
+
+FORMATS = {"text", "html", "simple_format", "md", "ansi"}
+VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
+TOP = {"score", "execution_time", "output", "output_format", "test_output_format", "test_name_format", "visibility",
+       "stdout_visibility", "extra_data", "tests", "leaderboard"}
+TEST = {"score", "max_score", "status", "name", "name_format", "number", "output", "output_format", "tags",
+        "visibility", "extra_data"}
+# Gradescope states no size limit; results this size render slowly, and ours stay far below it.
+LIMIT = 1000 * 1000
+EPSILON = 0.005  # points are written to 0.01
+
+
+def is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def validate(data, raw):
+    errors = []
+    if len(raw) > LIMIT:
+        errors.append(f"{len(raw)} bytes, over {LIMIT}")
+    if not isinstance(data, dict):
+        return errors + ["not a JSON object"]
+    for key in data.keys() - TOP:
+        errors.append(f"unknown top-level field '{key}'")
+    if "score" not in data and "tests" not in data:
+        errors.append("neither 'score' nor 'tests'")
+    if "score" in data and not (is_number(data["score"]) and data["score"] >= 0):
+        errors.append(f"score {data['score']!r} is not a number >= 0")
+    if "execution_time" in data and not (is_number(data["execution_time"]) and data["execution_time"] >= 0):
+        errors.append(f"execution_time {data['execution_time']!r} is not a number >= 0")
+    for key in ("output",):
+        if key in data and not isinstance(data[key], str):
+            errors.append(f"{key} is not a string")
+    for key in ("output_format", "test_output_format"):
+        if key in data and data[key] not in FORMATS:
+            errors.append(f"{key} {data[key]!r} is not one of {sorted(FORMATS)}")
+    for key in ("visibility", "stdout_visibility"):
+        if key in data and data[key] not in VISIBILITY:
+            errors.append(f"{key} {data[key]!r} is not one of {sorted(VISIBILITY)}")
+    tests = data.get("tests", [])
+    if not isinstance(tests, list):
+        return errors + ["tests is not a list"]
+    total_max = 0.0
+    for i, test in enumerate(tests):
+        where = f"tests[{i}]"
+        if not isinstance(test, dict):
+            errors.append(f"{where} is not an object")
+            continue
+        for key in test.keys() - TEST:
+            errors.append(f"{where}: unknown field '{key}'")
+        for key in ("name", "output", "number"):
+            if key in test and not isinstance(test[key], str):
+                errors.append(f"{where}.{key} is not a string")
+        if not test.get("name"):
+            errors.append(f"{where}: no name")
+        if "output_format" in test and test["output_format"] not in FORMATS:
+            errors.append(f"{where}.output_format {test['output_format']!r} is not one of {sorted(FORMATS)}")
+        if "visibility" in test and test["visibility"] not in VISIBILITY:
+            errors.append(f"{where}.visibility {test['visibility']!r} is not one of {sorted(VISIBILITY)}")
+        if "status" in test and test["status"] not in ("passed", "failed"):
+            errors.append(f"{where}.status {test['status']!r} is not passed or failed")
+        if "tags" in test and not (isinstance(test["tags"], list) and all(isinstance(t, str) for t in test["tags"])):
+            errors.append(f"{where}.tags is not a list of strings")
+        if "score" not in test and "status" not in test:
+            errors.append(f"{where}: neither score nor status")
+        if "score" in test and not (is_number(test["score"]) and test["score"] >= 0):
+            errors.append(f"{where}.score {test['score']!r} is not a number >= 0")
+        if "max_score" in test:
+            if not (is_number(test["max_score"]) and test["max_score"] > 0):
+                errors.append(f"{where}.max_score {test['max_score']!r} is not a number > 0")
+            elif is_number(test.get("score")) and test["score"] > test["max_score"] + EPSILON:
+                errors.append(f"{where}: score {test['score']} over max_score {test['max_score']}")
+            else:
+                total_max += test["max_score"]
+    if is_number(data.get("score")) and tests and data["score"] > total_max + EPSILON:
+        errors.append(f"score {data['score']} over the tests' total max_score {total_max}")
+    return errors
+
+
+def main():
+    if len(sys.argv) < 2:
+        print(__doc__, file=sys.stderr)
+        return 2
+    bad = 0
+    for path in sys.argv[1:]:
+        try:
+            with open(path, "rb") as f:
+                raw = f.read()
+            errors = validate(json.loads(raw.decode("utf-8")), raw)
+        except (OSError, ValueError) as error:
+            errors = [str(error)]
+        for error in errors:
+            print(f"{path}: {error}")
+        bad += bool(errors)
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
