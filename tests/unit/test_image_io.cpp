@@ -1,4 +1,4 @@
-// Unit tests for the image readers and writers (common/src/image_io.cpp). The readers are checked
+// Unit tests for the image readers and writers (common/content/src/image_io.cpp). The readers are checked
 // against files from independent writers (Pillow's PNG, ImageMagick's EXR and PFM, see
 // tests/fixtures/*/make_fixtures.*) whose pixels follow a known formula, so row order and values are
 // pinned down; the round trips then pin the writers. PFM bytes are also checked directly. Every

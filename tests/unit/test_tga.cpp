@@ -1,4 +1,4 @@
-// Unit tests for the TGA loader (common/src/tga.cpp). Valid files come from an independent writer
+// Unit tests for the TGA loader (common/content/src/tga.cpp). Valid files come from an independent writer
 // (Pillow, see tests/fixtures/tga/make_fixtures.py) and are compared with a reference PNG that
 // Pillow wrote and stb decodes, plus a few pixels checked against the generator's formula. Malformed
 // files are built byte by byte here: every one must give "<name>: <fault>", never a crash, an

@@ -1,6 +1,8 @@
 // The range check for numeric options; see cli_range.hpp.
 #include "t10/cli_range.hpp"
 
+#include "t10/error.hpp"
+
 #include <cstdio>
 #include <string>
 
@@ -38,6 +40,13 @@ CLI::Validator inRange(double lo, double hi, bool integer) {
             return std::string();
         },
         range);
+}
+
+void refuseEmpty(std::initializer_list<const CLI::Option*> options) {
+    for (const CLI::Option* option : options) {
+        if (option->count() > 0 && option->as<std::string>().empty())
+            throw UsageError(option->get_name() + ": the value is empty");
+    }
 }
 
 } // namespace t10

@@ -1,5 +1,10 @@
 // The frame loop: context, scene, the stage's callbacks, resizes and rebuilds, GL error checks;
 // input, output files, the benchmark and the UI are services of their own (see app.hpp).
+//
+// A window does not render like a headless run on every machine: tuneSceneForWindow()
+// (interactive.hpp) makes the scene pass render only when the camera or the size changes, and on
+// Mesa's software renderers with fewer parallax layers while the camera moves. Headless runs
+// (goldens, numeric tests, benchmarks) render every frame at full quality.
 #include "t10/app.hpp"
 #include "t10/scene_key.hpp"
 
@@ -7,10 +12,10 @@
 #include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/gpu_timers.hpp"
-#include "t10/image_io.hpp"
 #include "t10/input_image.hpp"
 #include "t10/interactive.hpp"
 #include "t10/outputs.hpp"
+#include "t10/stats.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -37,9 +42,9 @@ std::string glString(GLenum name) {
     return text != nullptr ? text : "?";
 }
 
-std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const Options& options) {
+std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const SceneSettings& scene) {
     std::vector<std::filesystem::path> dirs;
-    if (!options.shaderDir.empty()) dirs.emplace_back(options.shaderDir);
+    if (!scene.shaderDir.empty()) dirs.emplace_back(scene.shaderDir);
     dirs.emplace_back(stage.shaderDir);
     dirs.emplace_back(T10_COMMON_SHADER_DIR);
     return dirs;
@@ -47,11 +52,11 @@ std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const Op
 
 } // namespace
 
-App::App(const Stage& stage, const Options& options, Context& context)
-    : stage_(stage), options_(options), context_(context), shaders_(shaderSearchPath(stage, options)),
+App::App(const Stage& stage, const Settings& settings, Context& context)
+    : stage_(stage), settings_(settings), context_(context), shaders_(shaderSearchPath(stage, settings.scene)),
       glErrors_(std::make_unique<GlErrorLog>()) {
     glErrors_->installDebugCallback();
-    if (options_.verbose) {
+    if (settings_.run.verbose) {
         std::cout << "backend:  " << context_.description() << "\n"
                   << "vendor:   " << glString(GL_VENDOR) << "\n"
                   << "renderer: " << glString(GL_RENDERER) << "\n"
@@ -60,17 +65,17 @@ App::App(const Stage& stage, const Options& options, Context& context)
     // The input image is checked before the scene is built, so a file that cannot be rendered (too
     // large for this context or the memory, a side of 1, no colour channel) is refused at once.
     ImageF image;
-    if (!options_.input.empty()) image = loadInputImage(options_.input, options_.keepNonFinite, std::cerr);
+    if (!settings_.scene.input.empty()) image = loadInputImage(settings_.scene.input, settings_.scene.keepNonFinite, std::cerr);
     quad_ = std::make_unique<FullScreenQuad>();
-    views_ = std::make_unique<ViewService>(shaders_, *findView(options_.view));
-    views_->showThumbnails(options_.thumbnails);
+    views_ = std::make_unique<ViewService>(shaders_, *findView(settings_.views.view));
+    views_->showThumbnails(settings_.views.thumbnails);
     loadScene();
     context_.framebufferSize(width_, height_);
-    if (!options_.input.empty()) {
-        if (options_.sizeGiven && (image.width != options_.width || image.height != options_.height)) {
-            throw UsageError("--input " + options_.input + " is " + std::to_string(image.width) + "x" +
-                             std::to_string(image.height) + " but --size asks for " + std::to_string(options_.width) +
-                             "x" + std::to_string(options_.height));
+    if (!settings_.scene.input.empty()) {
+        if (settings_.context.sizeGiven && (image.width != settings_.context.width || image.height != settings_.context.height)) {
+            throw UsageError("--input " + settings_.scene.input + " is " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + " but --size asks for " + std::to_string(settings_.context.width) +
+                             "x" + std::to_string(settings_.context.height));
         }
         if (image.width != width_ || image.height != height_) {
             context_.requestSize(image.width, image.height);
@@ -79,11 +84,11 @@ App::App(const Stage& stage, const Options& options, Context& context)
         scene_->setInputImage(std::move(image));
     }
     if (context_.isWindow()) {
-        // Interactive speed without a GPU (t10/interactive.hpp); headless renders are unchanged.
+        // Interactive speed without a GPU (t10/interactive.hpp; see the note at the top of this file).
         if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         input_ = std::make_unique<CameraInput>(context_.window(), camera_);
         viewKeys_ = std::make_unique<ViewKeys>(context_.window());
-        if (!options_.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
+        if (!settings_.scene.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
         // After the camera's callbacks, so that the UI's chain to them.
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
     }
@@ -91,19 +96,19 @@ App::App(const Stage& stage, const Options& options, Context& context)
 }
 
 void App::loadScene() {
-    const std::string file = options_.scene.empty() ? builtInScenePath() : options_.scene;
+    const std::string file = settings_.scene.scene.empty() ? builtInScenePath() : settings_.scene.scene;
     const auto start = Clock::now();
     const SceneDescription description = loadGltfScene(file);
     const double loadMs = secondsSince(start) * 1000.0;
     for (const std::string& warning : description.warnings) std::cerr << "warning: " << file << ": " << warning << "\n";
     const CameraPreset* preset =
-        options_.camera.empty() ? &description.cameras.front() : description.findCamera(options_.camera);
+        settings_.scene.camera.empty() ? &description.cameras.front() : description.findCamera(settings_.scene.camera);
     if (preset == nullptr)
-        throw UsageError("--camera " + options_.camera + ": unknown camera (" + file + " has " +
+        throw UsageError("--camera " + settings_.scene.camera + ": unknown camera (" + file + " has " +
                          description.cameraNames() + ")");
     camera_ = Camera(*preset);
     scene_ = std::make_unique<Scene>(shaders_, description);
-    if (options_.verbose) {
+    if (settings_.run.verbose) {
         std::cout << "scene:    " << file << ": " << description.triangleCount << " triangles, "
                   << description.materials.size() << " materials, " << description.lights.size()
                   << (description.defaultLights ? " default" : "") << " lights, loaded in " << loadMs << " ms\n";
@@ -134,8 +139,8 @@ void App::resize(int width, int height) {
     width_ = width;
     height_ = height;
     if (width == 0 || height == 0) return; // minimised: nothing to render until it comes back
-    if (!options_.input.empty() && (width != scene_->width() || height != scene_->height()) && scene_->width() != 0) {
-        throw Error("--input " + options_.input + ": the framebuffer cannot be resized while an input image is shown");
+    if (!settings_.scene.input.empty() && (width != scene_->width() || height != scene_->height()) && scene_->width() != 0) {
+        throw Error("--input " + settings_.scene.input + ": the framebuffer cannot be resized while an input image is shown");
     }
     scene_->resize(width, height);
     // Every size-dependent object of the stage is rebuilt exactly as at start-up.
@@ -175,21 +180,18 @@ void App::checkGlErrors(const std::string& when) {
 
 int App::run() {
     // Every output asked for is written after the last frame, or the run fails saying why.
-    if (options_.frames == 0 && context_.isWindow() && wantsOutputs(options_))
+    if (settings_.run.frames == 0 && context_.isWindow() && wantsOutputs(settings_.outputs))
         throw UsageError("--output, --exr and --dump are written after the last of --frames N frames: give --frames");
     std::string notWritten = "the window was closed before the last frame";
     resize(width_, height_);
     const bool window = context_.isWindow();
-    if (options_.bench > 0 && stageReady_) {
-        runBench(*this, stage_, options_.bench, options_.benchCsv);
-        checkGlErrors("in the benchmark");
-        // In a window the benchmark is all that was asked for.
-        if (window) glfwSetWindowShouldClose(context_.window(), GLFW_TRUE);
-    }
-    const int frames = options_.frames > 0 ? options_.frames : (window ? 0 : 1);
+    if (settings_.bench.frames > 0 && stageReady_) runBenchmark();
+    const int frames = settings_.run.frames > 0 ? settings_.run.frames : (window ? 0 : 1);
     std::vector<double> times;
     auto last = Clock::now();
     auto titleTime = last;
+    // Every iteration renders the stage; in a window the scene pass inside it may reuse the last
+    // frame's scene while nothing moved (render-on-change, see the top of this file).
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         context_.pollEvents();
         if (context_.shouldClose()) break;
@@ -213,13 +215,13 @@ int App::run() {
         frameTimeMs_ = window ? elapsed * 1000.0 : renderMs;
         checkGlErrors("in frame " + std::to_string(frame));
         times.push_back(renderMs);
-        if (options_.verbose) {
+        if (settings_.run.verbose) {
             std::cout << "frame " << frame << ": " << renderMs << " ms";
             if (const auto key = readSceneKey()) std::cout << ", key Ya " << key->ya;
             std::cout << "\n";
         }
         if (frames != 0 && frame == frames - 1) {
-            writeOutputs(options_, width_, height_, *scene_);
+            writeOutputs(settings_.outputs, width_, height_, *scene_);
             notWritten.clear();
             checkGlErrors("while reading the outputs");
         }
@@ -229,16 +231,16 @@ int App::run() {
         }
         context_.swapBuffers();
     }
-    if (wantsOutputs(options_) && !notWritten.empty())
+    if (wantsOutputs(settings_.outputs) && !notWritten.empty())
         throw Error("the outputs asked for were not written: " + notWritten);
-    if (options_.verbose && !times.empty()) printFrameTimes(times);
+    if (settings_.run.verbose && !times.empty()) printFrameTimes(times);
     return 0;
 }
 
 void App::followSize(int frame) {
-    if (static_cast<std::size_t>(frame) < options_.resizeSequence.size()) {
+    if (static_cast<std::size_t>(frame) < settings_.run.resizeSequence.size()) {
         // Scripted resize (tests): the same path a window's size change takes.
-        const auto [w, h] = options_.resizeSequence[static_cast<std::size_t>(frame)];
+        const auto [w, h] = settings_.run.resizeSequence[static_cast<std::size_t>(frame)];
         context_.requestSize(w, h);
         resize(w, h);
     } else if (context_.isWindow()) {
@@ -256,29 +258,38 @@ void App::showFrameTimeInTitle() {
     context_.setTitle(title);
 }
 
-void App::printFrameTimes(std::vector<double> times) const {
+void App::runBenchmark() {
+    BenchTarget target;
+    target.name = stage_.name;
+    target.width = width_;
+    target.height = height_;
+    if (stage_.benchSettings != nullptr) target.settings = stage_.benchSettings();
+    target.renderFrame = [this] { renderFrame(); };
+    target.timers = stage_.timers;
+    runBench(settings_.bench, target);
+    checkGlErrors("in the benchmark");
+    // In a window the benchmark is all that was asked for.
+    if (context_.isWindow()) glfwSetWindowShouldClose(context_.window(), GLFW_TRUE);
+}
+
+void App::printFrameTimes(const std::vector<double>& times) const {
     const double mean = std::accumulate(times.begin(), times.end(), 0.0) / static_cast<double>(times.size());
-    std::sort(times.begin(), times.end());
-    std::cout << "frames: " << times.size() << ", median frame time " << times[times.size() / 2] << " ms, mean "
-              << mean << " ms\n";
+    std::cout << "frames: " << times.size() << ", median frame time " << median(times) << " ms, mean " << mean
+              << " ms\n";
 }
 
 int runStage(int argc, const char* const* argv, const Stage& stage) {
-    Options options;
-    const int parsed = parseCommandLine(argc, argv, stage.name, stage.summary, options, stage.addOptions);
+    Settings settings;
+    const int parsed = parseSettings(argc, argv, stage.name, stage.summary, settings, stage.addOptions);
     if (parsed >= 0) return parsed;
     try {
-        ContextOptions contextOptions;
-        contextOptions.backend = options.backend;
-        contextOptions.headless = options.headless;
-        contextOptions.width = options.width;
-        contextOptions.height = options.height;
+        ContextOptions contextOptions = settings.context;
         contextOptions.title = stage.name;
 #ifdef T10_GL_DEBUG
         contextOptions.debug = true;
 #endif
         std::unique_ptr<Context> context = Context::create(contextOptions);
-        App app(stage, options, *context);
+        App app(stage, settings, *context);
         return app.run();
     } catch (const Error& error) {
         // UsageError is an Error with exit code 2.

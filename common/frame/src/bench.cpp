@@ -1,16 +1,21 @@
 // The bench driver and its table; see bench.hpp.
 #include "t10/bench.hpp"
 
-#include "t10/app.hpp"
+#include "t10/cli_range.hpp"
 #include "t10/error.hpp"
+#include "t10/file.hpp"
+#include "t10/gl.hpp"
+#include "t10/stats.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <ostream>
+#include <sstream>
 
 namespace t10 {
 
@@ -21,17 +26,28 @@ struct Stats {
     double max = 0.0;
 };
 
-Stats stats(std::vector<double> samples) {
+Stats stats(const std::vector<double>& samples) {
     Stats s;
     if (samples.empty()) return s;
-    std::sort(samples.begin(), samples.end());
-    const std::size_t n = samples.size();
-    s.median = n % 2 == 1 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
-    s.min = samples.front();
-    s.max = samples.back();
+    s.median = median(samples);
+    const auto [lo, hi] = std::minmax_element(samples.begin(), samples.end());
+    s.min = *lo;
+    s.max = *hi;
     return s;
 }
 } // namespace
+
+void addBenchOptions(CLI::App& cli, BenchSettings& settings) {
+    CLI::Option_group* group = cli.add_option_group("Benchmark", "Timing the stage's frames");
+    CLI::Option* bench = group->add_option("--bench", settings.frames,
+                                           "Render N frames after " + std::to_string(kBenchWarmUpFrames) +
+                                               " warm-up frames and print the median time of the frame and of each "
+                                               "pass the stage times (use with --headless)")
+                             ->check(inRange(1, 100000, true));
+    group->add_option("--bench-csv", settings.csv, "Also write the --bench table as CSV "
+                                                   "(pass,median_ms,min_ms,max_ms,frames)")
+        ->needs(bench);
+}
 
 void BenchTable::add(const std::vector<PassTime>& passes, double frameWallMs) {
     double post = 0.0;
@@ -73,37 +89,37 @@ void BenchTable::writeCsv(const std::string& path) const {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     std::error_code error;
     if (!parent.empty()) std::filesystem::create_directories(parent, error);
-    std::ofstream file(path);
-    if (!file) throw t10::Error(path + ": cannot write the benchmark CSV");
-    file << "pass,median_ms,min_ms,max_ms,frames\n" << std::fixed << std::setprecision(4);
+    std::ostringstream text;
+    text << "pass,median_ms,min_ms,max_ms,frames\n" << std::fixed << std::setprecision(4);
     for (const Row& row : rows()) {
         const Stats s = stats(row.samples);
-        file << row.name << "," << s.median << "," << s.min << "," << s.max << "," << row.samples.size() << "\n";
+        text << row.name << "," << s.median << "," << s.min << "," << s.max << "," << row.samples.size() << "\n";
     }
-    if (!file) throw t10::Error(path + ": cannot write the benchmark CSV");
+    const std::string csv = text.str();
+    writeFileAtomically(path, csv.data(), csv.size(), "the benchmark CSV");
 }
 
-void runBench(App& app, const Stage& stage, int frames, const std::string& csvPath) {
+void runBench(const BenchSettings& settings, const BenchTarget& target) {
     BenchTable table;
-    for (int i = 0; i < kBenchWarmUpFrames + frames; ++i) {
+    for (int i = 0; i < kBenchWarmUpFrames + settings.frames; ++i) {
         const auto start = std::chrono::steady_clock::now();
-        app.renderFrame();
+        target.renderFrame();
         glFinish();
         const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         std::vector<PassTime> passes;
-        if (stage.timers != nullptr) {
-            stage.timers->collect(true);
-            passes = stage.timers->latest();
+        if (target.timers != nullptr) {
+            target.timers->collect(true);
+            passes = target.timers->latest();
         }
         if (i >= kBenchWarmUpFrames) table.add(passes, wallMs);
     }
-    std::cout << stage.name << " benchmark: " << app.width() << "x" << app.height();
-    if (stage.benchSettings != nullptr) std::cout << ", " << stage.benchSettings();
-    std::cout << "; median of " << frames << " frames after " << kBenchWarmUpFrames << " warm-up frames\n";
+    std::cout << target.name << " benchmark: " << target.width << "x" << target.height;
+    if (!target.settings.empty()) std::cout << ", " << target.settings;
+    std::cout << "; median of " << settings.frames << " frames after " << kBenchWarmUpFrames << " warm-up frames\n";
     table.print(std::cout);
-    if (!csvPath.empty()) {
-        table.writeCsv(csvPath);
-        std::cout << "wrote " << csvPath << "\n";
+    if (!settings.csv.empty()) {
+        table.writeCsv(settings.csv);
+        std::cout << "wrote " << settings.csv << "\n";
     }
 }
 

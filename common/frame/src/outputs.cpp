@@ -1,10 +1,14 @@
 // The output files of a run; see outputs.hpp.
 #include "t10/outputs.hpp"
 
+#include "t10/args.hpp"
+#include "t10/cli_range.hpp"
 #include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
 #include "t10/readback.hpp"
+
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -53,11 +57,31 @@ std::string dumpFileName(unsigned unit, int level) {
     return "unit" + std::to_string(unit) + "_level" + std::to_string(level) + ".pfm";
 }
 
-bool wantsOutputs(const Options& options) {
+void addOutputOptions(CLI::App& cli, OutputSettings& settings) {
+    CLI::Option_group* group = cli.add_option_group("Outputs", "Files written after the last frame");
+    CLI::Option* output = group->add_option("--output", settings.output,
+                                            "Write the final frame as an 8-bit PNG (exactly what the window shows)");
+    CLI::Option* exr = group->add_option("--exr", settings.exr,
+                                         "Write the HDR accumulation buffer as an OpenEXR file (RGBA half)");
+    CLI::Option* dump = group->add_option("--dump", settings.dumpDir,
+                                          "After the last frame, write every level of the textures on units "
+                                          "15-17 (contract.hpp) as PFM files into DIR (for numeric checks)");
+    group->callback([&settings, output, exr, dump] {
+        refuseEmpty({output, exr, dump});
+        if (!settings.output.empty() && !hasSuffix(settings.output, ".png")) {
+            throw UsageError("--output " + settings.output + ": the file name must end in .png");
+        }
+        if (!settings.exr.empty() && !hasSuffix(settings.exr, ".exr")) {
+            throw UsageError("--exr " + settings.exr + ": the file name must end in .exr");
+        }
+    });
+}
+
+bool wantsOutputs(const OutputSettings& options) {
     return !options.output.empty() || !options.exr.empty() || !options.dumpDir.empty();
 }
 
-void writeOutputs(const Options& options, int width, int height, const Scene& scene) {
+void writeOutputs(const OutputSettings& options, int width, int height, const Scene& scene) {
     if (!options.output.empty()) {
         if (width == 0 || height == 0) throw Error(options.output + ": not written, the last frame was 0x0");
         createParentDirectory("--output", options.output);

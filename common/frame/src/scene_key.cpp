@@ -4,7 +4,7 @@
 #include "t10/contract.hpp"
 #include "t10/gl.hpp"
 #include "t10/readback.hpp"
-#include "t10/views.hpp"
+#include "t10/view_catalogue.hpp"
 
 #include <algorithm>
 #include <cmath>

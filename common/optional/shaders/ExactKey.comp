@@ -1,4 +1,5 @@
-// The exact mean of level 0 of the luminance texture, for t10::ExactKey (common/src/exact_key.cpp).
+// The exact mean of level 0 of the luminance texture, for t10::ExactKey
+// (common/optional/src/exact_key.cpp, the optional library t10_exact_key: extras and the bench).
 // Pass 0: each 16x16 work group sums its tile into one partial sum. Pass 1: one work group adds the
 // partial sums and writes their mean. Each sum is a tree of float additions over at most a few
 // hundred terms, so the relative error stays near 1e-6, unlike a mip chain at odd sizes, whose

@@ -7,6 +7,8 @@ namespace t10 {
 
 namespace {
 
+// Its own shader folder (common/optional/shaders): an absolute name, which the search path keeps as it is.
+constexpr const char* kShaderFile = T10_OPTIONAL_SHADER_DIR "/ExactKey.comp";
 constexpr int kTile = 16; // the work group is kTile x kTile (ExactKey.comp)
 constexpr GLint kPassLocation = 0;
 constexpr GLint kSizeLocation = 1;
@@ -15,7 +17,7 @@ constexpr GLint kPartialCountLocation = 2;
 } // namespace
 
 ExactKey::ExactKey(const ShaderManager& shaders)
-    : program_(shaders.createProgram({"ExactKey.comp"})), result_(makeBuffer()) {
+    : program_(shaders.createProgram({kShaderFile})), result_(makeBuffer()) {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, result_.get());
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(float), nullptr, GL_DYNAMIC_COPY);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);

@@ -1,4 +1,5 @@
-// The frame loop every stage runs: runStage() parses the command line and creates the context;
+// The frame loop every stage runs: runStage() parses the command line (each service's options
+// group, composed in settings.hpp) and creates the context;
 // App owns the scene, the camera and the quad, calls the stage's GL_Init / GL_Render / GL_Quit,
 // follows resizes and rebuild requests, and hands the rest to services: camera_input (keys and
 // mouse), outputs (the files after the last frame), bench (--bench), views (--view, drawn over the
@@ -7,12 +8,12 @@
 #pragma once
 #include "t10/camera.hpp"
 #include "t10/camera_input.hpp"
-#include "t10/cli.hpp"
 #include "t10/context.hpp"
 #include "t10/framebuffer.hpp"
 #include "t10/gl_errors.hpp"
 #include "t10/quad.hpp"
 #include "t10/scene.hpp"
+#include "t10/settings.hpp"
 #include "t10/shader.hpp"
 #include "t10/stage.hpp"
 #include "t10/ui_host.hpp"
@@ -26,7 +27,7 @@ namespace t10 {
 
 class App {
 public:
-    App(const Stage& stage, const Options& options, Context& context);
+    App(const Stage& stage, const Settings& settings, Context& context);
     ~App();
     App(const App&) = delete;
     App& operator=(const App&) = delete;
@@ -51,7 +52,7 @@ public:
     // Renders until the frame count is reached or the window closes; returns the exit code.
     int run();
     // One frame of the stage into framebuffer 0: a requested rebuild, then GL_Render inside the
-    // stage's pass timers. No input, UI, outputs or swap (the bench driver times exactly this).
+    // stage's pass timers. No input, UI, outputs or swap (the bench driver is handed exactly this).
     void renderFrame();
 
 private:
@@ -63,10 +64,11 @@ private:
     void drawUi();
     void checkGlErrors(const std::string& when);
     void showFrameTimeInTitle();
-    void printFrameTimes(std::vector<double> times) const;
+    void printFrameTimes(const std::vector<double>& times) const;
+    void runBenchmark();
 
     const Stage& stage_;
-    Options options_;
+    Settings settings_;
     Context& context_;
     ShaderManager shaders_;
     std::unique_ptr<FullScreenQuad> quad_;

@@ -1,19 +1,26 @@
 // What a stage offers the frame loop. A stage is its Tutorial10.cpp: the tutorial's GL_Init /
 // GL_Render / GL_Quit, and, in extras/, options, keys, a panel and pass timers. The loop calls
 // them; a stage never calls its own GL_Init again (it asks App::requestRebuild()).
+// It names the frame loop's types only by declaration, so it includes nothing of common/.
 #pragma once
-#include "t10/cli.hpp"
-
+#include <functional>
 #include <memory>
 #include <string>
 
 struct GLFWwindow;
+
+namespace CLI {
+class App;
+}
 
 namespace t10 {
 
 class App;
 class PassTimers;
 class UiHost;
+
+// Adds stage-specific options to the parser (extras/); may be empty.
+using AddOptionsHook = std::function<void(CLI::App&)>;
 
 struct Stage {
     const char* name;      // the stage folder, e.g. "tutorial10_part1_tonemap"

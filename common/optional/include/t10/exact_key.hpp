@@ -1,5 +1,5 @@
 // The scene key without the mip chain's error: the exact mean of level 0 of the luminance texture,
-// computed on the GPU by a two-pass compute reduction (common/shaders/ExactKey.comp) and written
+// computed on the GPU by a two-pass compute reduction (common/optional/shaders/ExactKey.comp) and written
 // into the texture's 1x1 level, where the tutorial's final pass reads it.
 //
 // Why: glGenerateMipmap's filter is implementation-defined. At power-of-two sizes every level is an
@@ -13,7 +13,7 @@ namespace t10 {
 
 class ExactKey {
 public:
-    // Compiles ExactKey.comp, found through `shaders` (common/shaders is always searched).
+    // Compiles common/optional/shaders/ExactKey.comp through `shaders`.
     explicit ExactKey(const ShaderManager& shaders);
 
     // Averages level 0 (width x height, one channel, as the luminance pass wrote it) of `texture`

@@ -17,6 +17,7 @@ struct ContextOptions {
     bool headless = false;   // with Backend::Auto: skip the window even if there is a display
     int width = 1280;
     int height = 720;
+    bool sizeGiven = false;  // --size was given (an --input image must then have that size)
     std::string title;
     bool debug = false;      // request a debug context (KHR_debug output)
 };
