@@ -6,8 +6,9 @@
 #include "reference.hpp"
 
 #include "t10/error.hpp"
+#include "t10/file.hpp"
 #include "t10/image_io.hpp"
-#include "t10/views.hpp"
+#include "t10/view_catalogue.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -68,11 +69,8 @@ double decodeScale(const Image8& image, int x, int y) {
 }
 
 std::string readText(const std::string& path) {
-    std::ifstream file(path);
-    if (!file) throw t10::Error(path + ": cannot read");
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
+    const std::vector<std::uint8_t> bytes = t10::readFile(path); // throws naming the file and the reason
+    return std::string(bytes.begin(), bytes.end());
 }
 
 // "accumulation 1" -> 1 in the nan caption; -1 if the target is not listed.
