@@ -7,14 +7,16 @@ Each layer folder holds include/t10/*.hpp and src/*.cpp. A file may include (`#i
 only headers of its own layer or of the layers it sits on:
 
     base      (GL-free: contract, errors, files, median, sizes, JSON, CLI11 checks)
-    platform  base
-    content   platform, base
-    frame     content, platform, base
-    optional  content, platform, base            (t10_exact_key: extras and the bench)
-    panel     frame, content, platform, base     (t10_panel: Dear ImGui, extras only)
+    reference base                               (the GL-free CPU reference, when it moves here)
+    platform  reference, base
+    content   platform, reference, base
+    frame     content, platform, reference, base
+    optional  content, platform, reference, base (t10_exact_key: extras and the bench)
+    panel     frame, and all below frame         (t10_panel: Dear ImGui, extras only)
 
-and the glad loader (`glad/gl.h`); never stage code, a test's or a tool's header (`reference.hpp`,
-`../../tests/...`). `t10/stage.hpp`, what a stage offers the loop, may include nothing above the
+and the glad loader (`glad/gl.h`); never stage code, a test's or a tool's header (`dumps.hpp`,
+`compare.hpp`, `../../tests/...`). A header is known by its path below its layer's include/ folder
+(`t10/scene.hpp`), or by its file name where the layer has no include/ folder. `t10/stage.hpp`, what a stage offers the loop, may include nothing above the
 platform layer. No two files may need each other: the include graph between units (a header and
 its source, `views.hpp` + `views.cpp`) has no cycle. A code file in a folder that is no layer is a
 problem too (a new folder gets its rule here first). System headers (`<...>`) are not checked.
@@ -28,17 +30,28 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 # Each layer and the layers its files may include (itself included).
 ALLOWED = {
     "base": {"base"},
-    "platform": {"platform", "base"},
-    "content": {"content", "platform", "base"},
-    "frame": {"frame", "content", "platform", "base"},
-    "optional": {"optional", "content", "platform", "base"},
-    "panel": {"panel", "frame", "content", "platform", "base"},
+    "reference": {"reference", "base"},
+    "platform": {"platform", "reference", "base"},
+    "content": {"content", "platform", "reference", "base"},
+    "frame": {"frame", "content", "platform", "reference", "base"},
+    "optional": {"optional", "content", "platform", "reference", "base"},
+    "panel": {"panel", "frame", "content", "platform", "reference", "base"},
 }
 # Headers held to a stricter rule than their folder's.
-STRICTER = {"t10/stage.hpp": {"platform", "base"}}
+STRICTER = {"t10/stage.hpp": {"platform", "reference", "base"}}
 # Folders of common/ that hold data, not code.
 DATA_FOLDERS = {"assets", "shaders"}
 CODE_SUFFIXES = {".hpp", ".cpp", ".h", ".c"}
+HEADER_SUFFIXES = {".hpp", ".h"}
+
+
+def include_name(common, layer, path):
+    """How code includes the header at `path`: below <layer>/include/, else its file name."""
+    include_dir = common / layer / "include"
+    try:
+        return path.relative_to(include_dir).as_posix()
+    except ValueError:
+        return path.name
 
 
 def code_files(common):
@@ -90,8 +103,8 @@ def main():
         return 1
     owner = {}  # "t10/name.hpp" -> layer
     for layer, path in files:
-        if layer is not None and path.suffix == ".hpp" and path.parent.name == "t10":
-            owner[f"t10/{path.name}"] = layer
+        if layer is not None and path.suffix in HEADER_SUFFIXES:
+            owner[include_name(common, layer, path)] = layer
     problems = []
     graph = {}  # unit ("views") -> units it includes
     for layer, path in files:
@@ -99,7 +112,7 @@ def main():
             problems.append(f"{path}: a code file outside the layer folders ({', '.join(ALLOWED)}); "
                             "give its folder a rule in tests/layers.py")
             continue
-        name = f"t10/{path.name}"
+        name = include_name(common, layer, path)
         allowed = STRICTER.get(name, ALLOWED[layer])
         unit = path.stem
         for number, line in enumerate(path.read_text().splitlines(), 1):
@@ -114,9 +127,11 @@ def main():
                                 "(stage, test and tool code sit above common/)")
                 continue
             if owner[target] not in allowed:
-                rule = "may include only " + " and ".join(sorted(allowed)) if name in STRICTER else \
-                    f"a layer {layer} may not include"
-                problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]} ({rule})")
+                if name in STRICTER:
+                    rule = f" ({path.name} may include only {', '.join(sorted(allowed))})"
+                else:
+                    rule = f", a layer {layer} may not include"
+                problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]}{rule}")
             other = pathlib.PurePath(target).stem
             if other != unit:
                 graph.setdefault(unit, set()).add(other)

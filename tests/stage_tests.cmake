@@ -82,13 +82,13 @@ function(t10_add_layer_mutant name file line regex)
              COMMAND ${EXPECT} 1 "${regex}" -- ${Python3_EXECUTABLE} ${LAYERS} ${root})
 endfunction()
 t10_add_layer_mutant("a header that includes a test's header" content/include/t10/scene.hpp
-                     "#include \"reference.hpp\"" "scene.hpp:1: includes \"reference.hpp\"")
+                     "#include \"dumps.hpp\"" "scene.hpp:1: includes \"dumps.hpp\", which is not a header of common/")
 t10_add_layer_mutant("content that includes the frame layer" content/src/scene.cpp
-                     "#include \"t10/app.hpp\"" "scene.cpp:1: includes \"t10/app.hpp\" of frame")
+                     "#include \"t10/app.hpp\"" "scene.cpp:1: includes \"t10/app.hpp\" of frame, a layer content may not include")
 t10_add_layer_mutant("platform that includes content" platform/src/context.cpp
                      "#include \"t10/image.hpp\"" "context.cpp:1: includes \"t10/image.hpp\" of content")
 t10_add_layer_mutant("stage.hpp that includes the command line" frame/include/t10/stage.hpp
-                     "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(may include only")
+                     "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(stage.hpp may include only")
 t10_add_layer_mutant("two files that need each other" frame/src/view_catalogue.cpp
                      "#include \"t10/views.hpp\"" "cycle between files: (view_catalogue -> views -> view_catalogue|views -> view_catalogue -> views)")
 

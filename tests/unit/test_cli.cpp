@@ -6,6 +6,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <iostream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -82,4 +85,24 @@ TEST_CASE("a repeated option takes its last value", "[cli]") {
     CHECK(options.context.backend == t10::Backend::OsMesa);
     CHECK(options.context.width == 32);
     CHECK(options.context.height == 16);
+}
+
+TEST_CASE("each service adds its own options group", "[cli]") {
+    t10::Settings options;
+    std::ostringstream help;
+    std::streambuf* saved = std::cout.rdbuf(help.rdbuf());
+    const int code = parse({"--help"}, options);
+    std::cout.rdbuf(saved);
+    CHECK(code == 0);
+    for (const char* group : {"Context", "Run", "Scene", "Outputs", "Views", "Benchmark"}) {
+        INFO(group);
+        CHECK(help.str().find(std::string("[Option Group: ") + group + "]") != std::string::npos);
+    }
+    // An option appears once, in its service's group.
+    const std::string text = help.str();
+    const std::size_t outputs = text.find("[Option Group: Outputs]");
+    const std::size_t views = text.find("[Option Group: Views]");
+    CHECK(text.find("--exr") > outputs);
+    CHECK(text.find("--exr") < views);
+    CHECK(text.find("--exr", text.find("--exr") + 1) == std::string::npos);
 }
