@@ -64,18 +64,20 @@ App::App(const Stage& stage, const Settings& settings, Context& context)
     }
     // The input image is checked before the scene is built, so a file that cannot be rendered (too
     // large for this context or the memory, a side of 1, no colour channel) is refused at once.
+    const SceneSettings& scene = settings_.scene;
+    const ContextOptions& size = settings_.context;
     ImageF image;
-    if (!settings_.scene.input.empty()) image = loadInputImage(settings_.scene.input, settings_.scene.keepNonFinite, std::cerr);
+    if (!scene.input.empty()) image = loadInputImage(scene.input, scene.keepNonFinite, std::cerr);
     quad_ = std::make_unique<FullScreenQuad>();
     views_ = std::make_unique<ViewService>(shaders_, *findView(settings_.views.view));
     views_->showThumbnails(settings_.views.thumbnails);
     loadScene();
     context_.framebufferSize(width_, height_);
-    if (!settings_.scene.input.empty()) {
-        if (settings_.context.sizeGiven && (image.width != settings_.context.width || image.height != settings_.context.height)) {
-            throw UsageError("--input " + settings_.scene.input + " is " + std::to_string(image.width) + "x" +
-                             std::to_string(image.height) + " but --size asks for " + std::to_string(settings_.context.width) +
-                             "x" + std::to_string(settings_.context.height));
+    if (!scene.input.empty()) {
+        if (size.sizeGiven && (image.width != size.width || image.height != size.height)) {
+            throw UsageError("--input " + scene.input + " is " + std::to_string(image.width) + "x" +
+                             std::to_string(image.height) + " but --size asks for " + std::to_string(size.width) + "x" +
+                             std::to_string(size.height));
         }
         if (image.width != width_ || image.height != height_) {
             context_.requestSize(image.width, image.height);
@@ -88,7 +90,7 @@ App::App(const Stage& stage, const Settings& settings, Context& context)
         if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         input_ = std::make_unique<CameraInput>(context_.window(), camera_);
         viewKeys_ = std::make_unique<ViewKeys>(context_.window());
-        if (!settings_.scene.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
+        if (!scene.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
         // After the camera's callbacks, so that the UI's chain to them.
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
     }
@@ -139,8 +141,9 @@ void App::resize(int width, int height) {
     width_ = width;
     height_ = height;
     if (width == 0 || height == 0) return; // minimised: nothing to render until it comes back
-    if (!settings_.scene.input.empty() && (width != scene_->width() || height != scene_->height()) && scene_->width() != 0) {
-        throw Error("--input " + settings_.scene.input + ": the framebuffer cannot be resized while an input image is shown");
+    const std::string& input = settings_.scene.input;
+    if (!input.empty() && (width != scene_->width() || height != scene_->height()) && scene_->width() != 0) {
+        throw Error("--input " + input + ": the framebuffer cannot be resized while an input image is shown");
     }
     scene_->resize(width, height);
     // Every size-dependent object of the stage is rebuilt exactly as at start-up.

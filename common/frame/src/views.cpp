@@ -96,7 +96,8 @@ ViewService::~ViewService() {
 
 bool ViewService::available(View view) const {
     if (!discovered_) return true;
-    const bool key = chain_.luminance.texture != 0 && chain_.luminanceSmallest.width == 1 && chain_.luminanceSmallest.height == 1;
+    const bool key =
+        chain_.luminance.texture != 0 && chain_.luminanceSmallest.width == 1 && chain_.luminanceSmallest.height == 1;
     switch (view) {
     case View::Final: return true;
     case View::Hdr: return chain_.accumulation.texture != 0;
@@ -179,7 +180,9 @@ void ViewService::updateCaption() {
     case View::Bloom0:
     case View::Bloom1:
     case View::Blur: {
-        const ViewTarget& target = current_ == View::Bloom0 ? chain_.bloom0 : current_ == View::Bloom1 ? chain_.bloom1 : chain_.blur;
+        const ViewTarget& target = current_ == View::Bloom0   ? chain_.bloom0
+                                   : current_ == View::Bloom1 ? chain_.bloom1
+                                                              : chain_.blur;
         caption_ = std::string(viewName(current_)) + ": " + describe(target) + " x " + number(views::kBloomExposure) +
                    ", clamped, ^(1/2.2)";
         break;
@@ -230,8 +233,8 @@ void ViewService::draw(const FullScreenQuad& quad, int width, int height) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
 
-    const std::array<const ViewTarget*, views::kSampledTargets> targets = {&chain_.accumulation, &chain_.luminance, &chain_.bloom0, &chain_.bloom1,
-                                                                    &chain_.blur};
+    const std::array<const ViewTarget*, views::kSampledTargets> targets = {
+        &chain_.accumulation, &chain_.luminance, &chain_.bloom0, &chain_.bloom1, &chain_.blur};
     std::array<GLuint, views::kSampledTargets> views{};
     GLint present = 0;
     for (int i = 0; i < views::kSampledTargets; ++i) {
