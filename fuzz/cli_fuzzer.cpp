@@ -1,8 +1,8 @@
-// libFuzzer target: the command line every stage shares (parseCommandLine). The input is the
+// libFuzzer target: the command line every stage shares (parseSettings: every service's group). The input is the
 // argument list, one argument per line. Parsing must end in "go on" (-1), 0 (--help, --version) or 2
 // (bad usage), and "go on" must leave options that the rest of the program can trust.
-#include "t10/cli.hpp"
 #include "t10/contract.hpp"
+#include "t10/settings.hpp"
 
 #include <cctype>
 #include <cstddef>
@@ -47,16 +47,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<const char*> argv;
     for (const std::string& arg : args) argv.push_back(arg.c_str());
 
-    t10::Options options;
-    const int code = t10::parseCommandLine(static_cast<int>(argv.size()), argv.data(), "fuzz_stage", "fuzz", options);
+    t10::Settings settings;
+    const int code = t10::parseSettings(static_cast<int>(argv.size()), argv.data(), "fuzz_stage", "fuzz", settings);
     if (code != -1 && code != 0 && code != 2) __builtin_trap();
     if (code != -1) return 0;
-    if (!sideOk(options.width) || !sideOk(options.height)) __builtin_trap();
-    for (const auto& [w, h] : options.resizeSequence)
+    const t10::ContextOptions& context = settings.context;
+    if (!sideOk(context.width) || !sideOk(context.height)) __builtin_trap();
+    for (const auto& [w, h] : settings.run.resizeSequence)
         if (!(w == 0 && h == 0) && !(sideOk(w) && sideOk(h))) __builtin_trap();
-    if (!options.output.empty() && !endsWithNoCase(options.output, ".png")) __builtin_trap();
-    if (!options.exr.empty() && !endsWithNoCase(options.exr, ".exr")) __builtin_trap();
-    if (options.frames < 0 || options.frames > 1000000) __builtin_trap();
-    if (options.headless && options.backend == t10::Backend::Window) __builtin_trap();
+    const t10::OutputSettings& outputs = settings.outputs;
+    if (!outputs.output.empty() && !endsWithNoCase(outputs.output, ".png")) __builtin_trap();
+    if (!outputs.exr.empty() && !endsWithNoCase(outputs.exr, ".exr")) __builtin_trap();
+    if (settings.run.frames < 0 || settings.run.frames > 1000000) __builtin_trap();
+    if (context.headless && context.backend == t10::Backend::Window) __builtin_trap();
     return 0;
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks that the shaders agree with common/include/t10/contract.hpp (the host/shader interface).
+"""Checks that the shaders agree with common/base/include/t10/contract.hpp (the host/shader interface).
 
 usage: contract_check.py CONTRACT_HPP SHADER_DIR...
 

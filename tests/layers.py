@@ -1,54 +1,149 @@
 #!/usr/bin/env python3
-"""Checks the layering of common/: stages -> services in common/ -> GL and platform.
+"""Checks the layering of common/: its folders are the layers of ARCHITECTURE.md.
 
-usage: layers.py INCLUDE_DIR
+usage: layers.py COMMON_DIR
 
-Every `#include "..."` of a header in INCLUDE_DIR/t10/ must name another header of that folder
-(`t10/...`) or the glad loader (`glad/gl.h`): never stage code, a test's or a tool's header
-(`reference.hpp`, `compare.hpp`, `../../tests/...`). Headers of the core library (t10_common) must
-not include the Dear ImGui host of t10_panel (`t10/imgui_host.hpp`), which only extras links.
-System headers (`<...>`) are not checked. Prints each offending include with its file and line and
-exits 1 if there is any.
+Each layer folder holds include/t10/*.hpp and src/*.cpp. A file may include (`#include "..."`)
+only headers of its own layer or of the layers it sits on:
+
+    base      (GL-free: contract, errors, files, median, sizes, JSON, CLI11 checks)
+    reference base                               (the GL-free CPU reference, when it moves here)
+    platform  reference, base
+    content   platform, reference, base
+    frame     content, platform, reference, base
+    optional  content, platform, reference, base (t10_exact_key: extras and the bench)
+    panel     frame, and all below frame         (t10_panel: Dear ImGui, extras only)
+
+and the glad loader (`glad/gl.h`); never stage code, a test's or a tool's header (`dumps.hpp`,
+`compare.hpp`, `../../tests/...`). A header is known by its path below its layer's include/ folder
+(`t10/scene.hpp`), or by its file name where the layer has no include/ folder. `t10/stage.hpp`, what a stage offers the loop, may include nothing above the
+platform layer. No two files may need each other: the include graph between units (a header and
+its source, `views.hpp` + `views.cpp`) has no cycle. A code file in a folder that is no layer is a
+problem too (a new folder gets its rule here first). System headers (`<...>`) are not checked.
+Prints each problem with its file and line and exits 1 if there is any.
 """
 import pathlib
 import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
-# Headers of the t10_panel library (a layer above t10_common: it needs Dear ImGui).
-PANEL_HEADERS = {"t10/imgui_host.hpp"}
+# Each layer and the layers its files may include (itself included).
+ALLOWED = {
+    "base": {"base"},
+    "reference": {"reference", "base"},
+    "platform": {"platform", "reference", "base"},
+    "content": {"content", "platform", "reference", "base"},
+    "frame": {"frame", "content", "platform", "reference", "base"},
+    "optional": {"optional", "content", "platform", "reference", "base"},
+    "panel": {"panel", "frame", "content", "platform", "reference", "base"},
+}
+# Headers held to a stricter rule than their folder's.
+STRICTER = {"t10/stage.hpp": {"platform", "reference", "base"}}
+# Folders of common/ that hold data, not code.
+DATA_FOLDERS = {"assets", "shaders"}
+CODE_SUFFIXES = {".hpp", ".cpp", ".h", ".c"}
+HEADER_SUFFIXES = {".hpp", ".h"}
+
+
+def include_name(common, layer, path):
+    """How code includes the header at `path`: below <layer>/include/, else its file name."""
+    include_dir = common / layer / "include"
+    try:
+        return path.relative_to(include_dir).as_posix()
+    except ValueError:
+        return path.name
+
+
+def code_files(common):
+    """(layer, path) of every code file under common/; layer None for a folder that is no layer."""
+    for path in sorted(common.rglob("*")):
+        if path.suffix not in CODE_SUFFIXES or not path.is_file():
+            continue
+        top = path.relative_to(common).parts[0]
+        if top in DATA_FOLDERS:
+            continue
+        yield (top if top in ALLOWED else None), path
+
+
+def find_cycle(graph):
+    """One cycle of `graph` (unit -> set of units) as a list of units, or None."""
+    state = {}  # unit -> 1 while on the stack, 2 when done
+    stack = []
+
+    def visit(unit):
+        state[unit] = 1
+        stack.append(unit)
+        for other in sorted(graph.get(unit, ())):
+            if state.get(other) == 1:
+                return stack[stack.index(other):] + [other]
+            if other not in state:
+                found = visit(other)
+                if found:
+                    return found
+        stack.pop()
+        state[unit] = 2
+        return None
+
+    for unit in sorted(graph):
+        if unit not in state:
+            found = visit(unit)
+            if found:
+                return found
+    return None
 
 
 def main():
     if len(sys.argv) != 2:
         print(__doc__)
         return 2
-    root = pathlib.Path(sys.argv[1])
-    headers = sorted((root / "t10").glob("*.hpp"))
-    if not headers:
-        print(f"{root}/t10: no headers found")
+    common = pathlib.Path(sys.argv[1])
+    files = list(code_files(common))
+    if not files:
+        print(f"{common}: no code found")
         return 1
-    own = {f"t10/{h.name}" for h in headers}
+    owner = {}  # "t10/name.hpp" -> layer
+    for layer, path in files:
+        if layer is not None and path.suffix in HEADER_SUFFIXES:
+            owner[include_name(common, layer, path)] = layer
     problems = []
-    for header in headers:
-        name = f"t10/{header.name}"
-        for number, line in enumerate(header.read_text().splitlines(), 1):
+    graph = {}  # unit ("views") -> units it includes
+    for layer, path in files:
+        if layer is None:
+            problems.append(f"{path}: a code file outside the layer folders ({', '.join(ALLOWED)}); "
+                            "give its folder a rule in tests/layers.py")
+            continue
+        name = include_name(common, layer, path)
+        allowed = STRICTER.get(name, ALLOWED[layer])
+        unit = path.stem
+        for number, line in enumerate(path.read_text().splitlines(), 1):
             match = INCLUDE.match(line)
             if not match:
                 continue
             target = match.group(1)
             if target == "glad/gl.h":
                 continue
-            if target not in own:
-                problems.append(f"{header}:{number}: includes \"{target}\", which is not a header of common/ "
+            if target not in owner:
+                problems.append(f"{path}:{number}: includes \"{target}\", which is not a header of common/ "
                                 "(stage, test and tool code sit above common/)")
-            elif target in PANEL_HEADERS and name not in PANEL_HEADERS:
-                problems.append(f"{header}:{number}: includes \"{target}\" of t10_panel (Dear ImGui), a layer "
-                                "above t10_common")
+                continue
+            if owner[target] not in allowed:
+                if name in STRICTER:
+                    rule = f" ({path.name} may include only {', '.join(sorted(allowed))})"
+                else:
+                    rule = f", a layer {layer} may not include"
+                problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]}{rule}")
+            other = pathlib.PurePath(target).stem
+            if other != unit:
+                graph.setdefault(unit, set()).add(other)
+    # Every cycle: report one, drop its last edge, look again.
+    while (cycle := find_cycle(graph)) is not None:
+        problems.append("cycle between files: " + " -> ".join(cycle) +
+                        " (each needs the other; move what both need into a unit below them)")
+        graph[cycle[-2]].discard(cycle[-1])
     for problem in problems:
         print(problem)
-    print(f"{len(headers)} headers of {root}/t10: " + ("layers respected" if not problems
-                                                       else f"{len(problems)} includes from a higher layer"))
+    print(f"{len(files)} files in the layers of {common}: " +
+          ("layers respected, no cycle" if not problems else f"{len(problems)} problems"))
     return 1 if problems else 0
 
 

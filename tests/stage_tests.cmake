@@ -61,25 +61,58 @@ add_test(NAME "stage diff: rejects a step block that is never closed"
          COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new 1 1)
 
-# --- Layers: no header of common/ includes stage, test or tool code, nor the Dear ImGui host. ----
+# --- Layers: the folders of common/ are its layers; each includes only the ones below it. -------
 set(LAYERS ${CMAKE_CURRENT_SOURCE_DIR}/layers.py)
-add_test(NAME "layers: common/ headers include nothing from a higher layer"
-         COMMAND ${EXPECT} 0 "layers respected" -- ${Python3_EXECUTABLE} ${LAYERS} ${PROJECT_SOURCE_DIR}/common/include)
-# The check can fail: a copy of the headers where one includes the numeric tests' reference.
-file(REMOVE_RECURSE ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
-file(COPY ${PROJECT_SOURCE_DIR}/common/include/t10 DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
-file(READ ${PROJECT_SOURCE_DIR}/common/include/t10/scene.hpp scene_header)
-string(REPLACE "#pragma once\n" "#pragma once\n#include \"reference.hpp\"\n" scene_header "${scene_header}")
-file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/layers_check/t10/scene.hpp "${scene_header}")
-add_test(NAME "layers: rejects a common/ header that includes a test's header"
-         COMMAND ${EXPECT} 1 "scene.hpp:[0-9]+: includes \"reference.hpp\"" --
-                 ${Python3_EXECUTABLE} ${LAYERS} ${CMAKE_CURRENT_BINARY_DIR}/layers_check)
+set(T10_LAYER_FOLDERS base platform content frame optional panel)
+add_test(NAME "layers: common/ folders include only the layers below them, no file cycle"
+         COMMAND ${EXPECT} 0 "layers respected, no cycle" -- ${Python3_EXECUTABLE} ${LAYERS} ${PROJECT_SOURCE_DIR}/common)
+# The check can fail: copies of common/'s code with one include changed, each of which must be
+# reported with its file and line (or its cycle).
+# t10_add_layer_mutant(<name> <file under common/> <include line, put first in the file> <regex>)
+function(t10_add_layer_mutant name file line regex)
+    string(MAKE_C_IDENTIFIER "${name}" folder)
+    set(root ${CMAKE_CURRENT_BINARY_DIR}/layers_check/${folder})
+    file(REMOVE_RECURSE ${root})
+    foreach(layer IN LISTS T10_LAYER_FOLDERS)
+        file(COPY ${PROJECT_SOURCE_DIR}/common/${layer} DESTINATION ${root})
+    endforeach()
+    file(READ ${PROJECT_SOURCE_DIR}/common/${file} source)
+    file(WRITE ${root}/${file} "${line}\n${source}")
+    add_test(NAME "layers: rejects ${name}"
+             COMMAND ${EXPECT} 1 "${regex}" -- ${Python3_EXECUTABLE} ${LAYERS} ${root})
+endfunction()
+t10_add_layer_mutant("a header that includes a test's header" content/include/t10/scene.hpp
+                     "#include \"dumps.hpp\"" "scene.hpp:1: includes \"dumps.hpp\", which is not a header of common/")
+t10_add_layer_mutant("content that includes the frame layer" content/src/scene.cpp
+                     "#include \"t10/app.hpp\"" "scene.cpp:1: includes \"t10/app.hpp\" of frame, a layer content may not include")
+t10_add_layer_mutant("platform that includes content" platform/src/context.cpp
+                     "#include \"t10/image.hpp\"" "context.cpp:1: includes \"t10/image.hpp\" of content")
+t10_add_layer_mutant("stage.hpp that includes the command line" frame/include/t10/stage.hpp
+                     "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(stage.hpp may include only")
+t10_add_layer_mutant("two files that need each other" frame/src/view_catalogue.cpp
+                     "#include \"t10/views.hpp\"" "cycle between files: (view_catalogue -> views -> view_catalogue|views -> view_catalogue -> views)")
 
-# --- The contract: every stage's shaders agree with common/include/t10/contract.hpp. -----------
+# --- Function length: no function over 120 lines outside stage files and data generators. --------
+set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)
+add_test(NAME "function length: nothing over 120 lines outside stages and data generators"
+         COMMAND ${EXPECT} 0 "functions over 120 lines: 0" -- ${Python3_EXECUTABLE} ${FUNCTION_LENGTH} ${PROJECT_SOURCE_DIR})
+# The check can fail: a tree with one function of 121 lines (a signature, 119 statements, a brace).
+set(long_function "// A function one line over the limit.\nint tooLong(int x) {\n")
+foreach(i RANGE 1 119)
+    string(APPEND long_function "    x += ${i}; // { a brace in a comment does not count\n")
+endforeach()
+string(APPEND long_function "}\n")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/function_length_check/common/frame/src/long.cpp "${long_function}")
+add_test(NAME "function length: rejects a function of 121 lines"
+         COMMAND ${EXPECT} 1 "long.cpp:2: tooLong is 121 lines, over 120" --
+                 ${Python3_EXECUTABLE} ${FUNCTION_LENGTH} ${CMAKE_CURRENT_BINARY_DIR}/function_length_check)
+
+# --- The contract: every stage's shaders agree with common/base/include/t10/contract.hpp. -----------
 set(CONTRACT_CHECK ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/contract_check.py
-    ${PROJECT_SOURCE_DIR}/common/include/t10/contract.hpp)
+    ${PROJECT_SOURCE_DIR}/common/base/include/t10/contract.hpp)
 # tools/bench/shaders: the bench's own versions of the final pass read the same units.
-set(shader_dirs ${PROJECT_SOURCE_DIR}/common/shaders ${PROJECT_SOURCE_DIR}/tools/bench/shaders)
+set(shader_dirs ${PROJECT_SOURCE_DIR}/common/shaders ${PROJECT_SOURCE_DIR}/common/optional/shaders
+                ${PROJECT_SOURCE_DIR}/tools/bench/shaders)
 foreach(stage IN LISTS T10_STAGES)
     list(APPEND shader_dirs ${PROJECT_SOURCE_DIR}/${stage})
 endforeach()

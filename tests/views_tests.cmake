@@ -1,4 +1,4 @@
-# Tests of the view selector (common/src/views.cpp, --view). Included from tests/CMakeLists.txt,
+# Tests of the view selector (common/frame/src/views.cpp, --view). Included from tests/CMakeLists.txt,
 # which has set BIN, DUMPS, EXPECT and T10_STAGES.
 #
 # Every view of every stage renders one small frame without a GL error (a GL error fails the run),
@@ -121,6 +121,11 @@ t10_add_view_mutant(ev_stop_off_by_one tutorial10_part1_tonemap ev
                     "int(floor(log2(fY / fKey)))" "int(floor(log2(fY / fKey))) + 1"
                     "ev view matches the CPU classification of the HDR buffer (part1)"
                     "CHECK\\( mismatched <= allowed \\)")
+t10_add_view_mutant(key_marker_shifted tutorial10_part1_tonemap key
+                    "int iMarker = clamp(int(fKeyPosition * float(i2Size.x))"
+                    "int iMarker = clamp(int(fKeyPosition * float(i2Size.x)) + 8"
+                    "key view is a flat swatch of the smallest luminance level with the key marked on a scale strip (part1)"
+                    "CHECK\\( std::abs\\(marked.front\\(\\) - expectedColumn\\) <= 1 \\)")
 # The nan view's marking: a View.frag that never marks the accumulation must fail.
 file(READ ${PROJECT_SOURCE_DIR}/common/shaders/views/View.frag source)
 string(REPLACE "bool bBad = nonFinite(v4Colour);" "bool bBad = false;" mutated "${source}")

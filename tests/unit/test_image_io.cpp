@@ -1,9 +1,10 @@
-// Unit tests for the image readers and writers (common/src/image_io.cpp). The readers are checked
+// Unit tests for the image readers and writers (common/content/src/image_io.cpp). The readers are checked
 // against files from independent writers (Pillow's PNG, ImageMagick's EXR and PFM, see
 // tests/fixtures/*/make_fixtures.*) whose pixels follow a known formula, so row order and values are
 // pinned down; the round trips then pin the writers. PFM bytes are also checked directly. Every
 // failure must throw t10::Error naming the file. Only t10_common is needed: no stb or OpenEXR here.
 #include "t10/error.hpp"
+#include "t10/file.hpp"
 #include "t10/image_io.hpp"
 
 #include <catch2/catch.hpp>
@@ -42,11 +43,7 @@ void writeText(const std::string& path, const std::string& content) {
     REQUIRE(out);
 }
 
-std::vector<std::uint8_t> readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    REQUIRE(in);
-    return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+std::vector<std::uint8_t> readBytes(const std::string& path) { return t10::readFile(path); }
 
 // Distinct values per pixel and channel, different between the bottom and the top row.
 t10::Image8 makeImage8(int w, int h, int c) {

@@ -26,6 +26,7 @@ std::filesystem::path scratchDir(const std::string& name) {
     return dir;
 }
 
+// An independent reader (std::ifstream): file.cpp's writer is what these tests check.
 std::string readText(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -1,10 +1,11 @@
-// Unit tests for the TGA loader (common/src/tga.cpp). Valid files come from an independent writer
+// Unit tests for the TGA loader (common/content/src/tga.cpp). Valid files come from an independent writer
 // (Pillow, see tests/fixtures/tga/make_fixtures.py) and are compared with a reference PNG that
 // Pillow wrote and stb decodes, plus a few pixels checked against the generator's formula. Malformed
 // files are built byte by byte here: every one must give "<name>: <fault>", never a crash, an
 // out-of-bounds read (run under ASan) or an allocation sized from an unchecked header.
 #include "t10/image_io.hpp"
 #include "t10/error.hpp"
+#include "t10/file.hpp"
 #include "t10/tga.hpp"
 
 #include <catch2/catch.hpp>
@@ -82,11 +83,7 @@ std::string headerError(const Header& h, std::size_t dataBytes) {
     return decodeError(withData(makeHeader(h), dataBytes));
 }
 
-Bytes readBytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    REQUIRE(in);
-    return Bytes(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+Bytes readBytes(const std::string& path) { return t10::readFile(path); }
 
 // The generator's formula for the 7x5 fixtures (make_fixtures.py, small_pixel), row 0 = bottom.
 std::uint8_t expectedSmall(int x, int y, int channel, int channels) {

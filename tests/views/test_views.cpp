@@ -6,8 +6,9 @@
 #include "reference.hpp"
 
 #include "t10/error.hpp"
+#include "t10/file.hpp"
 #include "t10/image_io.hpp"
-#include "t10/views.hpp"
+#include "t10/view_catalogue.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -68,11 +69,8 @@ double decodeScale(const Image8& image, int x, int y) {
 }
 
 std::string readText(const std::string& path) {
-    std::ifstream file(path);
-    if (!file) throw t10::Error(path + ": cannot read");
-    std::stringstream text;
-    text << file.rdbuf();
-    return text.str();
+    const std::vector<std::uint8_t> bytes = t10::readFile(path); // throws naming the file and the reason
+    return std::string(bytes.begin(), bytes.end());
 }
 
 // "accumulation 1" -> 1 in the nan caption; -1 if the target is not listed.
@@ -192,13 +190,38 @@ void checkEv(const std::string& stage) {
 void checkKey(const std::string& stage) {
     const t10::test::Dump dump = t10::test::loadDump(stage + "/key");
     const double mapped = dump.luminanceKey();
+    const Image8& image = dump.frame;
     const std::array<int, 3> expected = toBytes(views::colourScale(mapped));
+    const int legend = views::legendHeight(image.height);
     int worst = 0;
-    for (int y = 0; y < dump.frame.height; ++y) {
-        for (int x = 0; x < dump.frame.width; ++x) worst = std::max(worst, byteDistance(dump.frame, x, y, expected));
+    for (int y = legend; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) worst = std::max(worst, byteDistance(image, x, y, expected));
     }
     // One 8-bit step: float against double in the colour scale's interpolation.
     CHECK( worst <= 1 );
+    // The strip below the swatch: the scale from left to right, and one column marked black over
+    // white where the key lies on it.
+    std::vector<int> marked;
+    int worstStrip = 0;
+    for (int x = 0; x < image.width; ++x) {
+        const bool black = byteDistance(image, x, legend - 1, {0, 0, 0}) == 0;
+        const bool white = byteDistance(image, x, 0, {255, 255, 255}) == 0;
+        if (black && white) {
+            marked.push_back(x);
+            continue;
+        }
+        const std::array<int, 3> scale = toBytes(views::colourScale((x + 0.5) / image.width));
+        for (int y = 0; y < legend; ++y) worstStrip = std::max(worstStrip, byteDistance(image, x, y, scale));
+    }
+    CHECK( worstStrip <= 1 );
+    REQUIRE( marked.size() == 1 );
+    // The marker's column: the key's position on the scale times the width, give or take one column
+    // for float against double at a column boundary (one column of 160 is 1/160 of the scale, 0.1 in
+    // natural log luminance, an 11 % change of Ya).
+    const int expectedColumn = std::clamp(int(mapped * image.width), 0, image.width - 1);
+    INFO(stage << ": key at " << mapped << " on the scale, marker in column " << marked.front() << ", expected "
+               << expectedColumn);
+    CHECK( std::abs(marked.front() - expectedColumn) <= 1 );
 }
 
 void checkNan(const std::string& name, bool fullResOnly) {
@@ -281,7 +304,7 @@ void checkThumbnails(const std::string& stage) {
 TEST_CASE("thumbnails show the accumulation and a label under the frame (part3)") { checkThumbnails(kPart3); }
 TEST_CASE("luminance view decodes to the CPU log luminance (part1)") { checkLuminance(kPart1); }
 TEST_CASE("luminance view decodes to the CPU log luminance (part3)") { checkLuminance(kPart3); }
-TEST_CASE("key view is a flat swatch of the smallest luminance level (part1)") { checkKey(kPart1); }
+TEST_CASE("key view is a flat swatch of the smallest luminance level with the key marked on a scale strip (part1)") { checkKey(kPart1); }
 TEST_CASE("bloom1 view shows the read-back level 1 (part2)") { checkBloom1(kPart2); }
 TEST_CASE("bloom1 view shows the read-back level 1 (part3)") { checkBloom1(kPart3); }
 TEST_CASE("ev view matches the CPU classification of the HDR buffer (part1)") { checkEv(kPart1); }

@@ -10,7 +10,7 @@
 //   tap13           the tutorial's luminance pass and key, its blur replaced by a 13-tap downsample
 //                   and tent upsample chain down to 1/64
 //   key_mip         the key alone, three ways: the tutorial's mip chain, a compute reduction
-//   key_compute     (common/src/exact_key.cpp) and a power-of-two luminance target (padded with
+//   key_compute     (common/optional/src/exact_key.cpp) and a power-of-two luminance target (padded with
 //   key_pot         zeros and rescaled), each with its error against the exact double-precision mean
 //
 // It prints the ratios to the tutorial's chain, the log-log slope of each chain's time against
@@ -19,22 +19,23 @@
 #include "reference.hpp"
 #include "t10/context.hpp"
 #include "t10/contract.hpp"
+#include "t10/args.hpp"
 #include "t10/error.hpp"
 #include "t10/exact_key.hpp"
+#include "t10/file.hpp"
 #include "t10/gl_errors.hpp"
 #include "t10/gltf_scene.hpp"
 #include "t10/quad.hpp"
 #include "t10/readback.hpp"
 #include "t10/scene.hpp"
+#include "t10/stats.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -482,12 +483,7 @@ struct Result {
     std::vector<std::pair<std::string, std::vector<double>>> passMs; // per pass, every timed run
 };
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using t10::median;
 
 double readLastLevel(GLuint texture, int level) {
     const t10::ImageF image = t10::readTextureLevel(texture, level);
@@ -512,13 +508,14 @@ struct Options {
     bool smoke = false;
 };
 
+// The shared size parser with the bench's own limits (and its message, which names the option).
 Size parseSize(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream in(text);
-    if (!(in >> w >> x >> h) || x != 'x' || in >> extra || w < 2 || h < 2 || w > 8192 || h > 8192)
+    try {
+        const auto [width, height] = t10::parseSize(text, 2, 8192);
+        return {width, height};
+    } catch (const t10::UsageError&) {
         throw t10::UsageError("--sizes: '" + text + "' is not WxH with both sides in 2..8192");
-    return {w, h};
+    }
 }
 
 std::string machineDescription(const t10::Context& context) {
@@ -561,16 +558,336 @@ double logLogSlope(const std::vector<std::pair<double, double>>& points) {
     return (n * sxy - sx * sy) / (n * sxx - sx * sx);
 }
 
+// Every file is written whole or not at all (t10::writeFileAtomically).
 void writeFile(const std::filesystem::path& path, const std::string& text) {
-    const std::filesystem::path temporary = path.string() + ".tmp";
-    {
-        std::ofstream out(temporary);
-        out << text;
-        if (!out.flush()) throw Error(path.string() + ": cannot write: " + std::strerror(errno));
+    t10::writeFileAtomically(path.string(), text.data(), text.size(), "the bench's results");
+}
+
+using NamedChains = std::vector<std::pair<std::string, Chain>>;
+
+NamedChains makeChains(t10::ExactKey& exactKey) {
+    return {
+        {"tutorial", tutorialChain},
+        {"keyonce", keyOnceChain},
+        {"lo_full", [](Targets& t, const Programs& p, PassClock& c, Cost* k) { learnOpenGlChain(t, p, c, k, false); }},
+        {"lo_half", [](Targets& t, const Programs& p, PassClock& c, Cost* k) { learnOpenGlChain(t, p, c, k, true); }},
+        {"tap13", tap13Chain},
+        {"key_mip", keyMipChain},
+        {"key_compute",
+         [&exactKey](Targets& t, const Programs& p, PassClock& c, Cost* k) { keyComputeChain(t, p, exactKey, c, k); }},
+        {"key_pot", keyPotChain},
+    };
+}
+
+// Puts Part 3's bloom back on its unit (the 13-tap chain's final pass reads a level of its own).
+void restoreBloom(const Targets& targets) {
+    bindUnit(kBloomUnit, targets.bloom_);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+// Every chain at one size, `repeats` times after the warm-up runs. Interleaved: every repeat runs
+// every chain once, starting one chain later each time, so a slow spell on the shared machine does
+// not land on one chain only.
+std::vector<Result> timeChains(const Size& size, Targets& targets, const Programs& programs, const NamedChains& chains,
+                               int repeats) {
+    std::vector<Result> results;
+    for (const auto& named : chains) results.push_back({named.first, size, {}, {}, {}, {}});
+    PassClock clock;
+    for (int run = 0; run < kWarmUpRuns + repeats; ++run) {
+        for (std::size_t k = 0; k < chains.size(); ++k) {
+            const std::size_t index = (k + std::size_t(run)) % chains.size();
+            Result& result = results[index];
+            glFinish();
+            const auto start = std::chrono::steady_clock::now();
+            chains[index].second(targets, programs, clock, result.cost.lookups == 0.0 ? &result.cost : nullptr);
+            const auto passes = clock.finish(); // waits for every query, so for the chain
+            double gpu = 0.0;
+            for (const auto& [pass, ms] : passes) gpu += ms;
+            const double wall =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            restoreBloom(targets);
+            if (run < kWarmUpRuns) continue;
+            result.gpuMs.push_back(gpu);
+            result.wallMs.push_back(wall);
+            for (const auto& [pass, ms] : passes) {
+                auto found = std::find_if(result.passMs.begin(), result.passMs.end(),
+                                          [&](const auto& p) { return p.first == pass; });
+                if (found == result.passMs.end()) result.passMs.push_back({pass, {ms}});
+                else found->second.push_back(ms);
+            }
+        }
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) throw Error(path.string() + ": cannot rename into place: " + error.message());
+    return results;
+}
+
+// The key-once final pass must draw the tutorial's frame (float rounding: one 8-bit step).
+void checkKeyOnce(const Size& size, Targets& targets, const Programs& programs) {
+    PassClock clock;
+    tutorialChain(targets, programs, clock, nullptr);
+    clock.finish();
+    const t10::ImageF tutorialFrame = t10::readTextureLevel(targets.display_, 0);
+    keyOnceChain(targets, programs, clock, nullptr);
+    clock.finish();
+    const t10::ImageF keyOnceFrame = t10::readTextureLevel(targets.display_, 0);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < tutorialFrame.data.size(); ++i)
+        worst = std::max(worst, double(std::abs(tutorialFrame.data[i] - keyOnceFrame.data[i])));
+    if (!(worst <= 1.5 / 255.0))
+        throw Error("bench: the key-once final pass differs from Part 3's by " + std::to_string(worst * 255.0) +
+                    " 8-bit steps at " + size.name());
+    restoreBloom(targets);
+}
+
+// The key, each way once more, read back and compared with the exact mean of the frame.
+void measureKeys(const Size& size, Targets& targets, const Programs& programs, t10::ExactKey& exactKey,
+                 const t10::Scene& scene, std::vector<KeyResult>& keys) {
+    PassClock clock;
+    const t10::ImageF frame = t10::readTextureLevel(scene.accumulationTexture(), 0);
+    const double exact = t10::ref::meanMappedLogLuminance(frame, true);
+    keyMipChain(targets, programs, clock, nullptr);
+    clock.finish();
+    keys.push_back({"mip", size, readLastLevel(targets.luminance_, targets.lumLevels_ - 1), exact});
+    keyComputeChain(targets, programs, exactKey, clock, nullptr);
+    clock.finish();
+    keys.push_back({"compute", size, double(exactKey.readMean()), exact});
+    keyPotChain(targets, programs, clock, nullptr);
+    clock.finish();
+    const double padded = readLastLevel(targets.pot_, targets.potLevels_ - 1);
+    keys.push_back({"pot", size, padded * double(targets.potW_) * double(targets.potH_) / size.pixels(), exact});
+}
+
+// Everything measured, and the results by size and chain.
+struct Measurements {
+    std::vector<Result> results;
+    std::vector<KeyResult> keys;
+    std::map<std::string, std::map<std::string, const Result*>> bySize; // size -> chain -> result
+
+    const Result& at(const Size& size, const std::string& chain) const { return *bySize.at(size.name()).at(chain); }
+    double gpuMedian(const Size& size, const std::string& chain) const { return median(at(size, chain).gpuMs); }
+};
+
+// The GL objects every size shares.
+struct Bench {
+    const Programs& programs;
+    t10::ExactKey& exactKey;
+    t10::Scene& scene;
+    const t10::Camera& camera;
+    const t10::FullScreenQuad& quad;
+    t10::GlErrorLog& glErrors;
+};
+
+void measureSize(const Size& size, const Bench& bench, const NamedChains& chains, int repeats, Measurements& out) {
+    std::cout << "measuring " << size.name() << " ..." << std::flush;
+    bench.scene.resize(size.width, size.height);
+    bench.scene.render(bench.camera);
+    glFinish();
+    Targets targets(size, bench.scene.accumulationTexture());
+    bindUnit(kLuminanceUnit, targets.luminance_);
+    restoreBloom(targets);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    bench.quad.bind();
+    const std::vector<Result> results = timeChains(size, targets, bench.programs, chains, repeats);
+    out.results.insert(out.results.end(), results.begin(), results.end());
+    checkKeyOnce(size, targets, bench.programs);
+    measureKeys(size, targets, bench.programs, bench.exactKey, bench.scene, out.keys);
+    bench.glErrors.pollGetError();
+    if (!bench.glErrors.empty()) throw Error("bench: GL error at " + size.name() + ":" + bench.glErrors.describe());
+    std::cout << " done\n";
+}
+
+// --- Report ---
+
+void chainTimesTable(std::ostream& table, const Options& options, const NamedChains& chains, const Measurements& m) {
+    table << "\nChains: tutorial = Part 3 (luminance pass, mip-chain key, 5 pass pairs of 5 taps at half\n"
+             "resolution in R11G11B10F, final pass); keyonce = the same, key math once per vertex;\n"
+             "lo_full / lo_half = LearnOpenGL-style bloom (RGBA16F bright pass, 10 passes of 9 taps, fixed\n"
+             "exposure: no key; add key_mip for a like-for-like figure) at full / half resolution; tap13 =\n"
+             "the tutorial's luminance pass and key with a 13-tap downsample / tent upsample chain to 1/64;\n"
+             "key_mip / key_compute / key_pot = the key alone (luminance pass + mip chain / compute\n"
+             "reduction / padded power-of-two mip chain).\n";
+    table << "\nMedian GPU time (GL_TIME_ELAPSED, sum of the chain's passes) over " << options.repeats
+          << " interleaved runs, and the ratio to the tutorial's chain\n";
+    char cell[64];
+    std::snprintf(cell, sizeof cell, "%-10s", "size");
+    table << cell;
+    for (const auto& named : chains) {
+        std::snprintf(cell, sizeof cell, " %20s", named.first.c_str());
+        table << cell;
+    }
+    table << "\n";
+    for (const Size& size : options.sizes) {
+        const double base = m.gpuMedian(size, "tutorial");
+        std::snprintf(cell, sizeof cell, "%-10s", size.name().c_str());
+        table << cell;
+        for (const auto& named : chains) {
+            const double ms = m.gpuMedian(size, named.first);
+            std::snprintf(cell, sizeof cell, " %9.2f ms (%5.2fx)", ms, ms / base);
+            table << cell;
+        }
+        table << "\n";
+    }
+}
+
+std::map<std::string, double> slopeTable(std::ostream& table, const Options& options, const NamedChains& chains,
+                                         const Measurements& m) {
+    // Slopes from 640x360 up where there are at least two such sizes: below, fixed costs per pass dominate.
+    table << "\nlog-log slope of time against pixels (1 = linear in pixels)";
+    const bool fromMid = std::count_if(options.sizes.begin(), options.sizes.end(),
+                                       [](const Size& s) { return s.pixels() >= 640.0 * 360.0; }) >= 2;
+    table << (fromMid ? ", sizes from 640x360 up\n" : ", all sizes\n");
+    std::map<std::string, double> slopes;
+    char cell[64];
+    for (const auto& named : chains) {
+        const std::string& name = named.first;
+        std::vector<std::pair<double, double>> points;
+        for (const Size& size : options.sizes)
+            if (!fromMid || size.pixels() >= 640.0 * 360.0) points.emplace_back(size.pixels(), m.gpuMedian(size, name));
+        slopes[name] = logLogSlope(points);
+        if (std::isnan(slopes[name])) std::snprintf(cell, sizeof cell, "  %-12s n/a (one size)\n", name.c_str());
+        else std::snprintf(cell, sizeof cell, "  %-12s %5.2f\n", name.c_str(), slopes[name]);
+        table << cell;
+    }
+    return slopes;
+}
+
+void passShareTables(std::ostream& table, const Options& options, const NamedChains& chains, const Measurements& m) {
+    // Where the time goes: each pass's share of its chain at the size closest to 1280x720.
+    const Size shareSize = *std::min_element(options.sizes.begin(), options.sizes.end(), [](const Size& a, const Size& b) {
+        return std::abs(std::log(a.pixels() / 921600.0)) < std::abs(std::log(b.pixels() / 921600.0));
+    });
+    table << "\nShare of each pass in its chain at " << shareSize.name() << "\n";
+    char cell[64];
+    for (const auto& named : chains) {
+        const Result& r = m.at(shareSize, named.first);
+        std::snprintf(cell, sizeof cell, "  %-12s", named.first.c_str());
+        table << cell;
+        for (const auto& [pass, samples] : r.passMs) {
+            std::snprintf(cell, sizeof cell, " %s %.0f%%", pass.c_str(), 100.0 * median(samples) / median(r.gpuMs));
+            table << cell << ";";
+        }
+        table << "\n";
+    }
+    // The final pass alone: the key math once per vertex against once per pixel.
+    auto passMedian = [](const Result& r, const std::string& pass) -> double {
+        for (const auto& [name, samples] : r.passMs)
+            if (name == pass) return median(samples);
+        return NAN;
+    };
+    table << "\nFinal pass alone, key math once per vertex / once per pixel (keyonce / tutorial):";
+    for (const Size& size : options.sizes) {
+        std::snprintf(cell, sizeof cell, " %s %.2f;", size.name().c_str(),
+                      passMedian(m.at(size, "keyonce"), "final") / passMedian(m.at(size, "tutorial"), "final"));
+        table << cell;
+    }
+    table << "\n";
+}
+
+void costAndKeyTables(std::ostream& table, const Options& options, const NamedChains& chains, const Measurements& m) {
+    const Size& largest = options.sizes.back();
+    table << "\nTexture lookups and bytes per chain at " << largest.name()
+          << " (bytes: each source texel read once + each target texel written once)\n";
+    char cell[64];
+    for (const auto& named : chains) {
+        const Cost& c = m.at(largest, named.first).cost;
+        const Cost& base = m.at(largest, "tutorial").cost;
+        std::snprintf(cell, sizeof cell, "  %-12s %8.1f M lookups (%5.2fx)", named.first.c_str(), c.lookups / 1e6,
+                      c.lookups / base.lookups);
+        table << cell;
+        std::snprintf(cell, sizeof cell, " %8.1f MB (%5.2fx)\n", c.bytes / 1e6, c.bytes / base.bytes);
+        table << cell;
+    }
+    table << "\nScene key Ya against the exact double-precision mean of the same frame (GL_R16 range-mapped\n"
+             "log luminance, the tutorial's definition; relative error of Ya)\n";
+    std::snprintf(cell, sizeof cell, "%-10s %12s", "size", "exact Ya");
+    table << cell;
+    for (const char* method : {"mip", "compute", "pot"}) {
+        std::snprintf(cell, sizeof cell, " %22s", method);
+        table << cell;
+    }
+    table << "\n";
+    for (std::size_t i = 0; i < m.keys.size(); i += 3) {
+        std::snprintf(cell, sizeof cell, "%-10s %12.6g", m.keys[i].size.name().c_str(), m.keys[i].exactYa());
+        table << cell;
+        for (std::size_t j = i; j < i + 3; ++j) {
+            std::snprintf(cell, sizeof cell, " %11.6g (%7.3f%%)", m.keys[j].ya(), 100.0 * m.keys[j].relativeError());
+            table << cell;
+        }
+        table << "\n";
+    }
+}
+
+void writeResultFiles(const Options& options, const NamedChains& chains, const Measurements& m,
+                      const std::map<std::string, double>& slopes, const std::string& report) {
+    const std::filesystem::path dir(options.outDir);
+    std::filesystem::create_directories(dir);
+    std::ostringstream csv;
+    csv << "size,width,height,pixels,chain,gpu_median_ms,gpu_min_ms,wall_median_ms,ratio_to_tutorial,lookups,bytes\n";
+    for (const Result& r : m.results) {
+        const double base = m.gpuMedian(r.size, "tutorial");
+        csv << r.size.name() << "," << r.size.width << "," << r.size.height << "," << r.size.pixels() << ","
+            << r.chain << "," << median(r.gpuMs) << "," << *std::min_element(r.gpuMs.begin(), r.gpuMs.end()) << ","
+            << median(r.wallMs) << "," << median(r.gpuMs) / base << "," << r.cost.lookups << "," << r.cost.bytes
+            << "\n";
+    }
+    writeFile(dir / "bench.csv", csv.str());
+    std::ostringstream passCsv;
+    passCsv << "size,chain,pass,gpu_median_ms,share_of_chain\n";
+    for (const Result& r : m.results) {
+        for (const auto& [pass, samples] : r.passMs)
+            passCsv << r.size.name() << "," << r.chain << "," << pass << "," << median(samples) << ","
+                    << median(samples) / median(r.gpuMs) << "\n";
+    }
+    writeFile(dir / "passes.csv", passCsv.str());
+    std::ostringstream keyCsv;
+    keyCsv.precision(9);
+    keyCsv << "size,width,height,method,mapped,exact_mapped,ya,exact_ya,relative_error\n";
+    for (const KeyResult& k : m.keys) {
+        keyCsv << k.size.name() << "," << k.size.width << "," << k.size.height << "," << k.method << "," << k.mapped
+               << "," << k.exact << "," << k.ya() << "," << k.exactYa() << "," << k.relativeError() << "\n";
+    }
+    writeFile(dir / "keys.csv", keyCsv.str());
+    // One row per size, one column per chain: what tools/bench/plot.gp draws.
+    std::ostringstream dat;
+    dat << "pixels";
+    for (const auto& named : chains) dat << " " << named.first;
+    dat << "\n";
+    for (const Size& size : options.sizes) {
+        dat << size.pixels();
+        for (const auto& named : chains) dat << " " << m.gpuMedian(size, named.first);
+        dat << "\n";
+    }
+    writeFile(dir / "times.dat", dat.str());
+    std::ostringstream slopeText;
+    for (const auto& [name, slope] : slopes) slopeText << name << "," << slope << "\n";
+    writeFile(dir / "slopes.csv", "chain,slope\n" + slopeText.str());
+    writeFile(dir / "report.txt", report);
+}
+
+// The two exact methods must be exact up to their stated rounding, on any driver: a compute
+// reduction in float (terms of at most a few hundred values in [0, 1]: 1e-5 of the mapped range
+// is a hundred times its rounding), and the padded power-of-two chain (every level an exact 2x2
+// average, rounded to GL_R16 again: half a step per level, scaled up by padded / real pixels).
+// Returns the number of keys outside their bound.
+int checkKeyBounds(const std::vector<KeyResult>& keys) {
+    int failures = 0;
+    const double range = std::log(t10::ref::kYwhite) - std::log(t10::ref::kEpsilon);
+    for (const KeyResult& k : keys) {
+        double mappedBound = 0.0;
+        if (k.method == "compute") mappedBound = 1e-5;
+        if (k.method == "pot") {
+            const int potW = nextPowerOfTwo(k.size.width), potH = nextPowerOfTwo(k.size.height);
+            mappedBound = (0.5 * (fullMipLevels(potW, potH) - 1) / 65535.0 + 1e-5) * double(potW) * double(potH) /
+                          k.size.pixels();
+        }
+        const double bound = std::exp(range * mappedBound) - 1.0;
+        if (mappedBound > 0.0 && !(k.relativeError() <= bound)) {
+            std::cerr << "t10-bench: FAIL: the " << k.method << " key at " << k.size.name() << " is off by "
+                      << 100.0 * k.relativeError() << "% of Ya, more than its bound " << 100.0 * bound << "%\n";
+            ++failures;
+        }
+    }
+    return failures;
 }
 
 int runBench(const Options& options) {
@@ -598,275 +915,21 @@ int runBench(const Options& options) {
     t10::Scene scene(tutorialShaders, description);
     const t10::Camera camera(description.cameras.front());
     t10::FullScreenQuad quad;
+    const NamedChains chains = makeChains(exactKey);
 
-    const std::vector<std::pair<std::string, Chain>> chains = {
-        {"tutorial", tutorialChain},
-        {"keyonce", keyOnceChain},
-        {"lo_full", [](Targets& t, const Programs& p, PassClock& c, Cost* k) { learnOpenGlChain(t, p, c, k, false); }},
-        {"lo_half", [](Targets& t, const Programs& p, PassClock& c, Cost* k) { learnOpenGlChain(t, p, c, k, true); }},
-        {"tap13", tap13Chain},
-        {"key_mip", keyMipChain},
-        {"key_compute",
-         [&exactKey](Targets& t, const Programs& p, PassClock& c, Cost* k) { keyComputeChain(t, p, exactKey, c, k); }},
-        {"key_pot", keyPotChain},
-    };
+    const Bench bench{programs, exactKey, scene, camera, quad, glErrors};
+    Measurements m;
+    for (const Size& size : options.sizes) measureSize(size, bench, chains, options.repeats, m);
+    for (const Result& r : m.results) m.bySize[r.size.name()][r.chain] = &r;
 
-    std::vector<Result> results;
-    std::vector<KeyResult> keys;
-    for (const Size& size : options.sizes) {
-        std::cout << "measuring " << size.name() << " ..." << std::flush;
-        scene.resize(size.width, size.height);
-        scene.render(camera);
-        glFinish();
-        Targets targets(size, scene.accumulationTexture());
-        bindUnit(kLuminanceUnit, targets.luminance_);
-        bindUnit(kBloomUnit, targets.bloom_);
-        glActiveTexture(GL_TEXTURE0);
-        glDisable(GL_DEPTH_TEST);
-        glDepthMask(GL_FALSE);
-        quad.bind();
-        std::vector<Result> sizeResults;
-        for (const auto& [name, chain] : chains) sizeResults.push_back({name, size, {}, {}, {}, {}});
-        PassClock clock;
-        // Interleaved: every repeat runs every chain once, starting one chain later each time, so
-        // a slow spell on the shared machine does not land on one chain only.
-        for (int run = 0; run < kWarmUpRuns + options.repeats; ++run) {
-            for (std::size_t k = 0; k < chains.size(); ++k) {
-                const std::size_t index = (k + std::size_t(run)) % chains.size();
-                Result& result = sizeResults[index];
-                glFinish();
-                const auto start = std::chrono::steady_clock::now();
-                chains[index].second(targets, programs, clock, result.cost.lookups == 0.0 ? &result.cost : nullptr);
-                const auto passes = clock.finish(); // waits for every query, so for the chain
-                double gpu = 0.0;
-                for (const auto& [pass, ms] : passes) gpu += ms;
-                const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                // The bloom level read by the 13-tap chain's final pass is its own: put Part 3's back.
-                bindUnit(kBloomUnit, targets.bloom_);
-                glActiveTexture(GL_TEXTURE0);
-                if (run >= kWarmUpRuns) {
-                    result.gpuMs.push_back(gpu);
-                    result.wallMs.push_back(wall);
-                    for (const auto& [pass, ms] : passes) {
-                        auto found = std::find_if(result.passMs.begin(), result.passMs.end(),
-                                                  [&](const auto& p) { return p.first == pass; });
-                        if (found == result.passMs.end()) result.passMs.push_back({pass, {ms}});
-                        else found->second.push_back(ms);
-                    }
-                }
-            }
-        }
-        results.insert(results.end(), sizeResults.begin(), sizeResults.end());
-
-        // The key-once final pass must draw the tutorial's frame (float rounding: one 8-bit step).
-        {
-            tutorialChain(targets, programs, clock, nullptr);
-            clock.finish();
-            const t10::ImageF tutorialFrame = t10::readTextureLevel(targets.display_, 0);
-            keyOnceChain(targets, programs, clock, nullptr);
-            clock.finish();
-            const t10::ImageF keyOnceFrame = t10::readTextureLevel(targets.display_, 0);
-            double worst = 0.0;
-            for (std::size_t i = 0; i < tutorialFrame.data.size(); ++i)
-                worst = std::max(worst, double(std::abs(tutorialFrame.data[i] - keyOnceFrame.data[i])));
-            if (!(worst <= 1.5 / 255.0))
-                throw Error("bench: the key-once final pass differs from Part 3's by " + std::to_string(worst * 255.0) +
-                            " 8-bit steps at " + size.name());
-        }
-        bindUnit(kBloomUnit, targets.bloom_);
-        glActiveTexture(GL_TEXTURE0);
-
-        // The key, each way once more, read back and compared with the exact mean of the frame.
-        const t10::ImageF frame = t10::readTextureLevel(scene.accumulationTexture(), 0);
-        const double exact = t10::ref::meanMappedLogLuminance(frame, true);
-        keyMipChain(targets, programs, clock, nullptr);
-        clock.finish();
-        keys.push_back({"mip", size, readLastLevel(targets.luminance_, targets.lumLevels_ - 1), exact});
-        keyComputeChain(targets, programs, exactKey, clock, nullptr);
-        clock.finish();
-        keys.push_back({"compute", size, double(exactKey.readMean()), exact});
-        keyPotChain(targets, programs, clock, nullptr);
-        clock.finish();
-        const double padded = readLastLevel(targets.pot_, targets.potLevels_ - 1);
-        keys.push_back({"pot", size, padded * double(targets.potW_) * double(targets.potH_) / size.pixels(), exact});
-        glErrors.pollGetError();
-        if (!glErrors.empty()) throw Error("bench: GL error at " + size.name() + ":" + glErrors.describe());
-        std::cout << " done\n";
-    }
-
-    // --- Report ---
-    std::map<std::string, std::map<std::string, const Result*>> bySize; // size -> chain -> result
-    for (const Result& r : results) bySize[r.size.name()][r.chain] = &r;
     std::ostringstream table;
-    table << "\nChains: tutorial = Part 3 (luminance pass, mip-chain key, 5 pass pairs of 5 taps at half\n"
-             "resolution in R11G11B10F, final pass); keyonce = the same, key math once per vertex;\n"
-             "lo_full / lo_half = LearnOpenGL-style bloom (RGBA16F bright pass, 10 passes of 9 taps, fixed\n"
-             "exposure: no key; add key_mip for a like-for-like figure) at full / half resolution; tap13 =\n"
-             "the tutorial's luminance pass and key with a 13-tap downsample / tent upsample chain to 1/64;\n"
-             "key_mip / key_compute / key_pot = the key alone (luminance pass + mip chain / compute\n"
-             "reduction / padded power-of-two mip chain).\n";
-    table << "\nMedian GPU time (GL_TIME_ELAPSED, sum of the chain's passes) over " << options.repeats
-          << " interleaved runs, and the ratio to the tutorial's chain\n";
-    char cell[64];
-    std::snprintf(cell, sizeof cell, "%-10s", "size");
-    table << cell;
-    for (const auto& [name, chain] : chains) {
-        std::snprintf(cell, sizeof cell, " %20s", name.c_str());
-        table << cell;
-    }
-    table << "\n";
-    for (const Size& size : options.sizes) {
-        const auto& row = bySize[size.name()];
-        const double base = median(row.at("tutorial")->gpuMs);
-        std::snprintf(cell, sizeof cell, "%-10s", size.name().c_str());
-        table << cell;
-        for (const auto& [name, chain] : chains) {
-            const double ms = median(row.at(name)->gpuMs);
-            std::snprintf(cell, sizeof cell, " %9.2f ms (%5.2fx)", ms, ms / base);
-            table << cell;
-        }
-        table << "\n";
-    }
-    // Slopes from 640x360 up where there are at least two such sizes: below, fixed costs per pass dominate.
-    table << "\nlog-log slope of time against pixels (1 = linear in pixels)";
-    const bool fromMid = std::count_if(options.sizes.begin(), options.sizes.end(),
-                                       [](const Size& s) { return s.pixels() >= 640.0 * 360.0; }) >= 2;
-    table << (fromMid ? ", sizes from 640x360 up\n" : ", all sizes\n");
-    std::map<std::string, double> slopes;
-    for (const auto& [name, chain] : chains) {
-        std::vector<std::pair<double, double>> points;
-        for (const Size& size : options.sizes)
-            if (!fromMid || size.pixels() >= 640.0 * 360.0)
-                points.emplace_back(size.pixels(), median(bySize[size.name()].at(name)->gpuMs));
-        slopes[name] = logLogSlope(points);
-        if (std::isnan(slopes[name])) std::snprintf(cell, sizeof cell, "  %-12s n/a (one size)\n", name.c_str());
-        else std::snprintf(cell, sizeof cell, "  %-12s %5.2f\n", name.c_str(), slopes[name]);
-        table << cell;
-    }
-    // Where the time goes: each pass's share of its chain at the size closest to 1280x720.
-    const Size shareSize = *std::min_element(options.sizes.begin(), options.sizes.end(), [](const Size& a, const Size& b) {
-        return std::abs(std::log(a.pixels() / 921600.0)) < std::abs(std::log(b.pixels() / 921600.0));
-    });
-    table << "\nShare of each pass in its chain at " << shareSize.name() << "\n";
-    for (const auto& [name, chain] : chains) {
-        const Result& r = *bySize[shareSize.name()].at(name);
-        std::snprintf(cell, sizeof cell, "  %-12s", name.c_str());
-        table << cell;
-        for (const auto& [pass, samples] : r.passMs) {
-            std::snprintf(cell, sizeof cell, " %s %.0f%%", pass.c_str(), 100.0 * median(samples) / median(r.gpuMs));
-            table << cell << ";";
-        }
-        table << "\n";
-    }
-    // The final pass alone: the key math once per vertex against once per pixel.
-    auto passMedian = [](const Result& r, const std::string& pass) -> double {
-        for (const auto& [name, samples] : r.passMs)
-            if (name == pass) return median(samples);
-        return NAN;
-    };
-    table << "\nFinal pass alone, key math once per vertex / once per pixel (keyonce / tutorial):";
-    for (const Size& size : options.sizes) {
-        const auto& row = bySize[size.name()];
-        std::snprintf(cell, sizeof cell, " %s %.2f;", size.name().c_str(),
-                      passMedian(*row.at("keyonce"), "final") / passMedian(*row.at("tutorial"), "final"));
-        table << cell;
-    }
-    table << "\n";
-    const Size& largest = options.sizes.back();
-    table << "\nTexture lookups and bytes per chain at " << largest.name()
-          << " (bytes: each source texel read once + each target texel written once)\n";
-    for (const auto& [name, chain] : chains) {
-        const Cost& c = bySize[largest.name()].at(name)->cost;
-        const Cost& base = bySize[largest.name()].at("tutorial")->cost;
-        std::snprintf(cell, sizeof cell, "  %-12s %8.1f M lookups (%5.2fx)", name.c_str(), c.lookups / 1e6,
-                      c.lookups / base.lookups);
-        table << cell;
-        std::snprintf(cell, sizeof cell, " %8.1f MB (%5.2fx)\n", c.bytes / 1e6, c.bytes / base.bytes);
-        table << cell;
-    }
-    table << "\nScene key Ya against the exact double-precision mean of the same frame (GL_R16 range-mapped\n"
-             "log luminance, the tutorial's definition; relative error of Ya)\n";
-    std::snprintf(cell, sizeof cell, "%-10s %12s", "size", "exact Ya");
-    table << cell;
-    for (const char* method : {"mip", "compute", "pot"}) {
-        std::snprintf(cell, sizeof cell, " %22s", method);
-        table << cell;
-    }
-    table << "\n";
-    for (std::size_t i = 0; i < keys.size(); i += 3) {
-        std::snprintf(cell, sizeof cell, "%-10s %12.6g", keys[i].size.name().c_str(), keys[i].exactYa());
-        table << cell;
-        for (std::size_t j = i; j < i + 3; ++j) {
-            std::snprintf(cell, sizeof cell, " %11.6g (%7.3f%%)", keys[j].ya(), 100.0 * keys[j].relativeError());
-            table << cell;
-        }
-        table << "\n";
-    }
+    chainTimesTable(table, options, chains, m);
+    const std::map<std::string, double> slopes = slopeTable(table, options, chains, m);
+    passShareTables(table, options, chains, m);
+    costAndKeyTables(table, options, chains, m);
     std::cout << table.str();
-
-    std::filesystem::create_directories(options.outDir);
-    std::ostringstream csv;
-    csv << "size,width,height,pixels,chain,gpu_median_ms,gpu_min_ms,wall_median_ms,ratio_to_tutorial,lookups,bytes\n";
-    for (const Result& r : results) {
-        const double base = median(bySize[r.size.name()].at("tutorial")->gpuMs);
-        csv << r.size.name() << "," << r.size.width << "," << r.size.height << "," << r.size.pixels() << ","
-            << r.chain << "," << median(r.gpuMs) << "," << *std::min_element(r.gpuMs.begin(), r.gpuMs.end()) << ","
-            << median(r.wallMs) << "," << median(r.gpuMs) / base << "," << r.cost.lookups << "," << r.cost.bytes
-            << "\n";
-    }
-    writeFile(std::filesystem::path(options.outDir) / "bench.csv", csv.str());
-    std::ostringstream passCsv;
-    passCsv << "size,chain,pass,gpu_median_ms,share_of_chain\n";
-    for (const Result& r : results) {
-        for (const auto& [pass, samples] : r.passMs)
-            passCsv << r.size.name() << "," << r.chain << "," << pass << "," << median(samples) << ","
-                    << median(samples) / median(r.gpuMs) << "\n";
-    }
-    writeFile(std::filesystem::path(options.outDir) / "passes.csv", passCsv.str());
-    std::ostringstream keyCsv;
-    keyCsv.precision(9);
-    keyCsv << "size,width,height,method,mapped,exact_mapped,ya,exact_ya,relative_error\n";
-    for (const KeyResult& k : keys) {
-        keyCsv << k.size.name() << "," << k.size.width << "," << k.size.height << "," << k.method << "," << k.mapped
-               << "," << k.exact << "," << k.ya() << "," << k.exactYa() << "," << k.relativeError() << "\n";
-    }
-    writeFile(std::filesystem::path(options.outDir) / "keys.csv", keyCsv.str());
-    // One row per size, one column per chain: what tools/bench/plot.gp draws.
-    std::ostringstream dat;
-    dat << "pixels";
-    for (const auto& [name, chain] : chains) dat << " " << name;
-    dat << "\n";
-    for (const Size& size : options.sizes) {
-        dat << size.pixels();
-        for (const auto& [name, chain] : chains) dat << " " << median(bySize[size.name()].at(name)->gpuMs);
-        dat << "\n";
-    }
-    writeFile(std::filesystem::path(options.outDir) / "times.dat", dat.str());
-    std::ostringstream slopeText;
-    for (const auto& [name, slope] : slopes) slopeText << name << "," << slope << "\n";
-    writeFile(std::filesystem::path(options.outDir) / "slopes.csv", "chain,slope\n" + slopeText.str());
-    writeFile(std::filesystem::path(options.outDir) / "report.txt", machine + table.str());
-    // The two exact methods must be exact up to their stated rounding, on any driver: a compute
-    // reduction in float (terms of at most a few hundred values in [0, 1]: 1e-5 of the mapped range
-    // is a hundred times its rounding), and the padded power-of-two chain (every level an exact 2x2
-    // average, rounded to GL_R16 again: half a step per level, scaled up by padded / real pixels).
-    int failures = 0;
-    const double range = std::log(t10::ref::kYwhite) - std::log(t10::ref::kEpsilon);
-    for (const KeyResult& k : keys) {
-        double mappedBound = 0.0;
-        if (k.method == "compute") mappedBound = 1e-5;
-        if (k.method == "pot") {
-            const int potW = nextPowerOfTwo(k.size.width), potH = nextPowerOfTwo(k.size.height);
-            mappedBound = (0.5 * (fullMipLevels(potW, potH) - 1) / 65535.0 + 1e-5) * double(potW) * double(potH) /
-                          k.size.pixels();
-        }
-        const double bound = std::exp(range * mappedBound) - 1.0;
-        if (mappedBound > 0.0 && !(k.relativeError() <= bound)) {
-            std::cerr << "t10-bench: FAIL: the " << k.method << " key at " << k.size.name() << " is off by "
-                      << 100.0 * k.relativeError() << "% of Ya, more than its bound " << 100.0 * bound << "%\n";
-            ++failures;
-        }
-    }
+    writeResultFiles(options, chains, m, slopes, machine + table.str());
+    const int failures = checkKeyBounds(m.keys);
     std::cout << "\nwrote " << options.outDir << "/bench.csv, keys.csv, slopes.csv, times.dat, passes.csv, report.txt\n";
     return failures == 0 ? 0 : 1;
 }

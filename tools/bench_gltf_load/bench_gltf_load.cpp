@@ -3,6 +3,7 @@
 // a test: `make bench-gltf` runs it on a generated scene of about one million triangles.
 #include "t10/error.hpp"
 #include "t10/gltf_scene.hpp"
+#include "t10/stats.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -30,7 +31,6 @@ int main(int argc, char** argv) {
         std::cerr << "bench_gltf_load: " << error.what() << "\n";
         return 1;
     }
-    std::sort(times.begin(), times.end());
-    std::cout << "median load time: " << times[times.size() / 2] << " ms (" << argv[1] << ")\n";
+    std::cout << "median load time: " << t10::median(times) << " ms (" << argv[1] << ")\n";
     return 0;
 }

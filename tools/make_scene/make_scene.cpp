@@ -1,7 +1,7 @@
 // make_scene OUT.gltf: writes the built-in scene (common/assets/scene.gltf + scene.bin) that every
-// stage loads through the glTF loader (common/src/gltf_scene.cpp), referring to the committed TGA
+// stage loads through the glTF loader (common/content/src/gltf_scene.cpp), referring to the committed TGA
 // textures next to it. The room, the crates, the lights and the camera presets below are the code
-// that used to build the scene in common/src/scene.cpp, moved here unchanged: edit the scene here,
+// that used to build the scene in common/content/src/scene.cpp, moved here unchanged: edit the scene here,
 // run `build/bin/make_scene common/assets/scene.gltf`, and commit both files (a test checks that
 // the committed files are what this tool writes).
 //

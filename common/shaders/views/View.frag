@@ -1,4 +1,4 @@
-// The view selector's pass (common/src/views.cpp): draws one buffer of the chain over framebuffer
+// The view selector's pass (common/frame/src/views.cpp): draws one buffer of the chain over framebuffer
 // 0. Each sampler holds a single-level texture view; each framebuffer pixel reads the texel at
 // pixel * texture size / framebuffer size (integer division), so a half-size level shows as 2x2
 // blocks and a test can find the texel behind every pixel. The encodings mirror t10::views.
@@ -110,7 +110,11 @@ void main() {
         float fT = iMapped == 1 ? fValue : (fValue - log(kEpsilon)) / (log(fYwhite) - log(kEpsilon));
         v3ColourOut = colourScale(bLegend ? (float(i2Pixel.x) + 0.5) / float(i2Size.x) : fT);
     } else if (iMode == kKey) {
-        v3ColourOut = colourScale(fKeyPosition);
+        // The swatch; along the bottom the scale with the key's column marked, black over white.
+        int iMarker = clamp(int(fKeyPosition * float(i2Size.x)), 0, i2Size.x - 1);
+        if (!bLegend) v3ColourOut = colourScale(fKeyPosition);
+        else if (i2Pixel.x == iMarker) v3ColourOut = i2Pixel.y * 2 >= iLegend ? vec3(0.0) : vec3(1.0);
+        else v3ColourOut = colourScale((float(i2Pixel.x) + 0.5) / float(i2Size.x));
     } else if (iMode == kBloom0) {
         v3ColourOut = display(fetch(s2Bloom0).rgb);
     } else if (iMode == kBloom1) {

@@ -1,0 +1,17 @@
+// The JSON writer; see json.hpp.
+#include "t10/json.hpp"
+
+#include "t10/file.hpp"
+
+namespace t10 {
+
+std::string jsonText(const nlohmann::json& value) {
+    return value.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+void writeJsonFile(const std::string& path, const nlohmann::json& value) {
+    const std::string text = jsonText(value);
+    writeFileAtomically(path, text.data(), text.size(), "JSON");
+}
+
+} // namespace t10

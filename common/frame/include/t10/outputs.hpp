@@ -1,0 +1,34 @@
+// The files a run writes after its last frame: --output (the default framebuffer as PNG), --exr
+// (the HDR accumulation texture) and --dump (every level of the post-process textures on the
+// units of contract.hpp, as PFM). The service owns its options group ("Outputs").
+#pragma once
+#include "t10/scene.hpp"
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace t10 {
+
+struct OutputSettings {
+    std::string output;  // --output FILE.png
+    std::string exr;     // --exr FILE.exr
+    std::string dumpDir; // --dump DIR, textures on units 15-17 as PFM after the last frame
+};
+
+// Adds the "Outputs" group to `cli`; bad values end the parse with t10::UsageError.
+void addOutputOptions(CLI::App& cli, OutputSettings& settings);
+
+// Writes every output `settings` asks for; throws t10::Error naming the file on failure, or when
+// the last frame was 0x0.
+void writeOutputs(const OutputSettings& settings, int width, int height, const Scene& scene);
+
+// True when `settings` asks for any output file.
+bool wantsOutputs(const OutputSettings& settings);
+
+// The name --dump gives one level of the texture on a unit: "unit16_level3.pfm".
+std::string dumpFileName(unsigned unit, int level);
+
+} // namespace t10

@@ -1,0 +1,49 @@
+// The run's options and the composition of every service's group; see settings.hpp.
+#include "t10/settings.hpp"
+
+#include "t10/args.hpp"
+#include "t10/cli.hpp"
+#include "t10/cli_range.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <sstream>
+
+namespace t10 {
+
+void addRunOptions(CLI::App& cli, RunSettings& settings) {
+    auto sequence = std::make_shared<std::string>(); // the text, owned by the group's callback
+    CLI::Option_group* group = cli.add_option_group("Run", "How many frames, at which sizes");
+    group->add_option("--frames", settings.frames,
+                      "Render N frames, then exit (headless default 1; window: until closed)")
+        ->check(CLI::Range(1, 1000000));
+    CLI::Option* resize = group->add_option(
+        "--resize-sequence", *sequence,
+        "Resize before each frame: WxH,WxH,... (for tests); each size follows the --size rule, and 0x0 stands for a "
+        "minimised window (nothing is rendered, so a run whose last frame is 0x0 cannot write its outputs)");
+    group->add_flag("--verbose,-v", settings.verbose, "Print the GL vendor, renderer and version, and frame times");
+    group->callback([&settings, sequence, resize] {
+        refuseEmpty({resize});
+        std::stringstream list(*sequence);
+        for (std::string item; std::getline(list, item, ',');) {
+            // 0x0 stands for a minimised window; anything else must be a real size.
+            settings.resizeSequence.push_back(item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item));
+        }
+    });
+}
+
+int parseSettings(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
+                  Settings& settings, const AddOptionsHook& stageOptions) {
+    return parseCommandLine(argc, argv, stageName, summary, [&](CLI::App& cli) {
+        addContextOptions(cli, settings.context);
+        addRunOptions(cli, settings.run);
+        addSceneOptions(cli, settings.scene);
+        addOutputOptions(cli, settings.outputs);
+        addViewOptions(cli, settings.views);
+        addBenchOptions(cli, settings.bench);
+        if (stageOptions) stageOptions(cli);
+    });
+}
+
+} // namespace t10
