@@ -3,6 +3,7 @@
 #include "t10/gltf_scene.hpp"
 
 #include "t10/error.hpp"
+#include "t10/gltf_schema.hpp"
 #include "t10/file.hpp"
 #include "t10/tga.hpp"
 
@@ -966,6 +967,8 @@ SceneDescription load(const std::uint8_t* bytes, std::size_t size, const std::st
     try {
         if (size > static_cast<std::size_t>(std::numeric_limits<unsigned int>::max()))
             fail("the file is larger than 4 GiB");
+        // The raw JSON's types and ranges first: tinygltf would quietly default a wrongly typed value.
+        if (const auto schemaFault = gltfSchemaFault(bytes, size)) fail(*schemaFault);
         tinygltf::TinyGLTF loader;
         ImageContext images{&limits};
         loader.SetImageLoader(&loadImage, &images);
