@@ -388,6 +388,7 @@ public:
         checkExtensions();
         convertMaterials();
         traverseNodes();
+        refuseNothingToDraw();
         if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn at rest");
         computeBounds();
         if (out_.lights.size() > kMaxLights)
@@ -401,6 +402,21 @@ private:
     void warn(const std::string& text) {
         if (std::find(out_.warnings.begin(), out_.warnings.end(), text) == out_.warnings.end())
             out_.warnings.push_back(text);
+    }
+
+    // A scene without a single triangle would render an empty frame and exit 0: refused, with why.
+    void refuseNothingToDraw() const {
+        if (out_.triangleCount > 0) return;
+        if (model_.meshes.empty()) fail("nothing to draw: the file has no meshes");
+        if (meshNodes_ == 0)
+            fail("nothing to draw: no node of the scene refers to a mesh (the file has " +
+                 std::to_string(model_.meshes.size()) + ")");
+        const std::string count = std::to_string(primitives_) + (primitives_ == 1 ? " primitive" : " primitives");
+        if (pointsOrLines_ == primitives_)
+            fail("nothing to draw: " + std::string(primitives_ == 1 ? "the scene's only primitive is" : "the scene's " + count + " are all") +
+                 " points or lines, which are not drawn");
+        fail("nothing to draw: every primitive was skipped (" + count + ": " + std::to_string(pointsOrLines_) +
+             " points or lines, " + std::to_string(primitives_ - pointsOrLines_) + " without a whole triangle)");
     }
 
     void checkExtensions() {
@@ -590,7 +606,10 @@ private:
             const tinygltf::Node& node = model_.nodes[n];
             const std::string what = "node " + std::to_string(index) + (node.name.empty() ? "" : " (" + node.name + ")");
             const glm::mat4 world = parentMatrix * nodeMatrix(node, what);
-            if (node.mesh >= 0) addMesh(node, world, what);
+            if (node.mesh >= 0) {
+                ++meshNodes_;
+                addMesh(node, world, what);
+            }
             if (node.camera >= 0) addCamera(node, world, what);
             addLight(node, world, what);
             if (node.skin >= 0) warn(what + " is skinned; it is drawn in its rest pose");
@@ -659,13 +678,21 @@ private:
         return out;
     }
 
+    // One primitive as a SceneMesh in world space; points and lines are counted and skipped.
     void addPrimitive(const tinygltf::Primitive& prim, const glm::mat4& world, const glm::mat3& normalMatrix,
                       bool mirrored, const std::string& what) {
+        ++primitives_;
         switch (prim.mode) {
-        case TINYGLTF_MODE_POINTS: warn("points are not drawn (" + what + " and any others)"); return;
+        case TINYGLTF_MODE_POINTS:
+            ++pointsOrLines_;
+            warn("points are not drawn (" + what + " and any others)");
+            return;
         case TINYGLTF_MODE_LINE:
         case TINYGLTF_MODE_LINE_LOOP:
-        case TINYGLTF_MODE_LINE_STRIP: warn("lines are not drawn (" + what + " and any others)"); return;
+        case TINYGLTF_MODE_LINE_STRIP:
+            ++pointsOrLines_;
+            warn("lines are not drawn (" + what + " and any others)");
+            return;
         case TINYGLTF_MODE_TRIANGLES:
         case TINYGLTF_MODE_TRIANGLE_STRIP:
         case TINYGLTF_MODE_TRIANGLE_FAN: break;
@@ -698,15 +725,7 @@ private:
         SceneMesh mesh;
         mesh.name = what;
         mesh.material = material;
-        mesh.vertices.resize(vertexCount); // positions.count is backed by the buffer
-        for (std::size_t i = 0; i < vertexCount; ++i) {
-            const glm::vec3 p(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
-            if (!finite(p)) fail(what + ": POSITION " + std::to_string(i) + " is not finite");
-            const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
-            if (!finite(w)) fail(what + ": POSITION " + std::to_string(i) + " is not finite in world space");
-            mesh.vertices[i].position = w;
-            mesh.vertices[i].uvBounds = glm::vec4(-kNoUvBound, -kNoUvBound, kNoUvBound, kNoUvBound);
-        }
+        readPositions(mesh, positions, world, what);
         auto optional = [&](const char* name, std::initializer_list<int> types, int components) {
             const int index = attribute(name);
             if (index < 0) return AccessorData{};
@@ -716,29 +735,62 @@ private:
                      std::to_string(vertexCount));
             return data;
         };
-        const AccessorData uvs = optional("TEXCOORD_0",
-                                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                          2);
+        readUvs(mesh,
+                optional("TEXCOORD_0",
+                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                          TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                         2),
+                optional(kUvBoundsAttribute, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4), what);
+        const AccessorData normals = optional("NORMAL", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 3);
+        const AccessorData tangents = optional("TANGENT", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
+
+        if (mirrored)
+            for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+        readNormals(mesh, indices, normals, normalMatrix, what);
+        mesh.indices = std::move(indices);
+        if (tangents.count != 0 && normals.count != 0) readTangents(mesh, tangents, world, mirrored, what);
+        else generateTangents(mesh);
+        for (const SceneVertex& v : mesh.vertices) {
+            out_.boundsMin = haveBounds_ ? glm::min(out_.boundsMin, v.position) : v.position;
+            out_.boundsMax = haveBounds_ ? glm::max(out_.boundsMax, v.position) : v.position;
+            haveBounds_ = true;
+        }
+        out_.triangleCount += mesh.indices.size() / 3;
+        out_.vertexCount += mesh.vertices.size();
+        out_.meshes.push_back(std::move(mesh));
+    }
+
+    static void readPositions(SceneMesh& mesh, const AccessorData& positions, const glm::mat4& world,
+                              const std::string& what) {
+        mesh.vertices.resize(positions.count); // positions.count is backed by the buffer
+        for (std::size_t i = 0; i < positions.count; ++i) {
+            const glm::vec3 p(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
+            if (!finite(p)) fail(what + ": POSITION " + std::to_string(i) + " is not finite");
+            const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
+            if (!finite(w)) fail(what + ": POSITION " + std::to_string(i) + " is not finite in world space");
+            mesh.vertices[i].position = w;
+            mesh.vertices[i].uvBounds = glm::vec4(-kNoUvBound, -kNoUvBound, kNoUvBound, kNoUvBound);
+        }
+    }
+
+    static void readUvs(SceneMesh& mesh, const AccessorData& uvs, const AccessorData& bounds, const std::string& what) {
         for (std::size_t i = 0; i < uvs.count; ++i) {
             // glTF's v = 0 is the image's top row; images here are stored bottom row first.
             const glm::vec2 uv(uvs.get(i, 0), 1.0f - uvs.get(i, 1));
             if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) fail(what + ": TEXCOORD_0 " + std::to_string(i) + " is not finite");
             mesh.vertices[i].uv = uv;
         }
-        const AccessorData bounds = optional(kUvBoundsAttribute, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
         for (std::size_t i = 0; i < bounds.count; ++i) {
             const glm::vec4 b(bounds.get(i, 0), bounds.get(i, 1), bounds.get(i, 2), bounds.get(i, 3));
             mesh.vertices[i].uvBounds = glm::vec4(b.x, 1.0f - b.w, b.z, 1.0f - b.y);
         }
-        const AccessorData normals = optional("NORMAL", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 3);
-        const AccessorData tangents = optional("TANGENT", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
+    }
 
-        if (mirrored)
-            for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
-
+    // The file's normals through the normal matrix, or (glTF: none given) flat shading, where each
+    // triangle gets its own three vertices and `indices` is renumbered to match.
+    static void readNormals(SceneMesh& mesh, std::vector<std::uint32_t>& indices, const AccessorData& normals,
+                            const glm::mat3& normalMatrix, const std::string& what) {
         if (normals.count == 0) {
-            // glTF: without normals, flat shading. Each triangle gets its own three vertices.
             std::vector<SceneVertex> flat;
             flat.reserve(indices.size());
             for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -752,43 +804,33 @@ private:
             }
             mesh.vertices = std::move(flat);
             for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
-        } else {
-            for (std::size_t i = 0; i < vertexCount; ++i) {
-                const glm::vec3 n(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
-                if (!finite(n)) fail(what + ": NORMAL " + std::to_string(i) + " is not finite");
-                const glm::vec3 w = normalMatrix * n;
-                mesh.vertices[i].normal = glm::length(w) > 0.0f ? glm::normalize(w) : glm::vec3(0, 0, 1);
-            }
+            return;
         }
-        mesh.indices = std::move(indices);
+        for (std::size_t i = 0; i < normals.count; ++i) {
+            const glm::vec3 n(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+            if (!finite(n)) fail(what + ": NORMAL " + std::to_string(i) + " is not finite");
+            const glm::vec3 w = normalMatrix * n;
+            mesh.vertices[i].normal = glm::length(w) > 0.0f ? glm::normalize(w) : glm::vec3(0, 0, 1);
+        }
+    }
 
-        if (tangents.count != 0 && normals.count != 0) {
-            const glm::mat3 linear(world);
-            for (std::size_t i = 0; i < vertexCount; ++i) {
-                const glm::vec3 t(tangents.get(i, 0), tangents.get(i, 1), tangents.get(i, 2));
-                const float sign = tangents.get(i, 3) < 0.0f ? -1.0f : 1.0f;
-                if (!finite(t)) fail(what + ": TANGENT " + std::to_string(i) + " is not finite");
-                SceneVertex& v = mesh.vertices[i];
-                // The bitangent in the file's space, then both through the node's transform (a
-                // mirroring transform keeps them consistent with the flipped winding).
-                glm::vec3 tw = linear * t;
-                tw = tw - v.normal * glm::dot(v.normal, tw);
-                v.tangent = glm::length(tw) > 0.0f ? glm::normalize(tw) : anyPerpendicular(v.normal);
-                // glTF: bitangent = cross(normal, tangent.xyz) * w, pointing up the image, which
-                // is the direction of increasing v here (v is flipped).
-                v.bitangent = glm::normalize(glm::cross(v.normal, v.tangent)) * sign * (mirrored ? -1.0f : 1.0f);
-            }
-        } else {
-            generateTangents(mesh);
+    static void readTangents(SceneMesh& mesh, const AccessorData& tangents, const glm::mat4& world, bool mirrored,
+                             const std::string& what) {
+        const glm::mat3 linear(world);
+        for (std::size_t i = 0; i < tangents.count; ++i) {
+            const glm::vec3 t(tangents.get(i, 0), tangents.get(i, 1), tangents.get(i, 2));
+            const float sign = tangents.get(i, 3) < 0.0f ? -1.0f : 1.0f;
+            if (!finite(t)) fail(what + ": TANGENT " + std::to_string(i) + " is not finite");
+            SceneVertex& v = mesh.vertices[i];
+            // The bitangent in the file's space, then both through the node's transform (a
+            // mirroring transform keeps them consistent with the flipped winding).
+            glm::vec3 tw = linear * t;
+            tw = tw - v.normal * glm::dot(v.normal, tw);
+            v.tangent = glm::length(tw) > 0.0f ? glm::normalize(tw) : anyPerpendicular(v.normal);
+            // glTF: bitangent = cross(normal, tangent.xyz) * w, pointing up the image, which
+            // is the direction of increasing v here (v is flipped).
+            v.bitangent = glm::normalize(glm::cross(v.normal, v.tangent)) * sign * (mirrored ? -1.0f : 1.0f);
         }
-        for (const SceneVertex& v : mesh.vertices) {
-            out_.boundsMin = haveBounds_ ? glm::min(out_.boundsMin, v.position) : v.position;
-            out_.boundsMax = haveBounds_ ? glm::max(out_.boundsMax, v.position) : v.position;
-            haveBounds_ = true;
-        }
-        out_.triangleCount += mesh.indices.size() / 3;
-        out_.vertexCount += mesh.vertices.size();
-        out_.meshes.push_back(std::move(mesh));
     }
 
     static glm::vec3 anyPerpendicular(const glm::vec3& n) {
@@ -958,6 +1000,10 @@ private:
     std::map<int, int> imageIndex_;
     int defaultMaterial_ = -1;
     bool haveBounds_ = false;
+    // For the reason a scene draws nothing: nodes with a mesh, primitives seen, points or lines among them.
+    std::size_t meshNodes_ = 0;
+    std::size_t primitives_ = 0;
+    std::size_t pointsOrLines_ = 0;
 };
 
 SceneDescription load(const std::uint8_t* bytes, std::size_t size, const std::string& name, const std::string& baseDir,

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <initializer_list>
@@ -42,12 +43,24 @@ std::string typeName(const Json& value) {
     return describe(value);
 }
 
+// 0, 1, 1.5708: a bound as a person writes it.
+std::string shortNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
 class Checker {
 public:
     explicit Checker(const Json& root) : root_(root) {}
 
     void run() {
         if (!root_.is_object()) fault("the file", "expected a JSON object, got " + typeName(root_));
+        // The top-level arrays first: an index into one that is not an array would be misreported.
+        for (const char* list : {"scenes", "nodes", "meshes", "accessors", "bufferViews", "buffers", "materials",
+                                 "textures", "samplers", "images", "cameras", "skins", "animations"})
+            if (const Json* v = member(root_, list); v != nullptr && !v->is_array())
+                fault(list, "expected an array, got " + typeName(*v));
         const Json* asset = member(root_, "asset");
         if (asset == nullptr) fault("asset", "missing (every glTF file has one)");
         object(*asset, "asset");
@@ -127,12 +140,8 @@ private:
     static std::int64_t integer(const Json& v, const std::string& path, std::int64_t minimum) {
         const std::string wanted = "an integer >= " + std::to_string(minimum);
         if (!v.is_number_integer()) fault(path, "expected " + wanted + ", got " + typeName(v));
-        if (v.is_number_unsigned()) {
-            const auto u = v.get<std::uint64_t>();
-            if (u > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max()))
-                fault(path, "expected " + wanted + " below 2^31, got " + v.dump());
-            return static_cast<std::int64_t>(u);
-        }
+        if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(std::numeric_limits<std::int32_t>::max()))
+            fault(path, "expected " + wanted + " below 2^31, got " + v.dump());
         const auto i = v.get<std::int64_t>();
         if (i < minimum) fault(path, "expected " + wanted + ", got " + v.dump());
         if (i > std::numeric_limits<std::int32_t>::max()) fault(path, "expected " + wanted + " below 2^31, got " + v.dump());
@@ -169,9 +178,9 @@ private:
         const double x = v.get<double>();
         const bool below = lowOpen ? !(x > lo) : !(x >= lo);
         if (below || !(x <= hi)) {
-            std::string range = lo <= -1e300  ? "at most " + Json(hi).dump()
-                                : hi >= 1e300 ? (lowOpen ? "above " : "at least ") + Json(lo).dump()
-                                              : "from " + Json(lo).dump() + " to " + Json(hi).dump();
+            const std::string range = lo <= -1e300  ? "at most " + shortNumber(hi)
+                                      : hi >= 1e300 ? (lowOpen ? "above " : "at least ") + shortNumber(lo)
+                                                    : "from " + shortNumber(lo) + " to " + shortNumber(hi);
             fault(path, "expected a number " + range + ", got " + v.dump());
         }
         return x;

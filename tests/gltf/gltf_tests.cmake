@@ -67,7 +67,13 @@ foreach(case
         "bad_cycle_root.gltf;which is not a root"
         "bad_cycle_sceneless.gltf;node 1 is part of a cycle"
         "bad_required_draco.gltf;requires the extension KHR_draco_mesh_compression"
-        "bad_wrong_type.gltf;bad_wrong_type.gltf: 'count' property is not a positive integer")
+        "bad_wrong_type.gltf;bad_wrong_type.gltf: accessors\\[0\\].count: expected an integer >= 1"
+        "schema_normal_scale_string.gltf;materials\\[0\\].normalTexture.scale: expected a number, got a string"
+        "schema_mesh_name_number.gltf;meshes\\[0\\].name: expected a string, got a number 1"
+        "schema_pbr_not_object.gltf;materials\\[0\\].pbrMetallicRoughness: expected an object"
+        "schema_texture_index_negative.gltf;materials\\[0\\].normalTexture.index: expected an integer >= 0, got -1"
+        "schema_primitives_object.gltf;meshes\\[0\\].primitives: expected an array, got an object"
+        "nothing_points.gltf;nothing to draw: the scene's only primitive is points or lines")
     list(GET case 0 file)
     list(GET case 1 message)
     add_test(NAME "gltf refuses: ${file}"
