@@ -971,25 +971,43 @@ private:
         add("default rim", {0.0f, 1.5f, -2.5f}, 0.5f);
     }
 
-    // A camera that shows the whole scene: in front of it (+Z), slightly above, looking at its
-    // centre, far enough that the bounding sphere fits the vertical field of view.
+    // A camera that shows the whole scene: in front of it (+Z), slightly above, looking at the centre
+    // of its bounds, as close as it can be with every corner of the bounding box inside the frame.
+    // The frame's aspect is not known here, so the box is fitted into a square of the vertical field
+    // of view (any frame at least as wide as it is tall shows all of it), filled to kFill.
     void addFramingCamera() {
         for (const CameraPreset& c : out_.cameras)
             if (c.name == "framing") return;
+        constexpr float kFill = 0.95f; // the box's projection reaches 95% of the way to the edge
         const glm::vec3 centre = 0.5f * (out_.boundsMin + out_.boundsMax);
         const float radius = std::max(0.5f * glm::length(out_.boundsMax - out_.boundsMin), 1e-3f);
         CameraPreset c;
         c.name = "framing";
         c.description = "Shows the whole scene from the front (+Z), slightly above";
         c.fovDegrees = 50.0f;
-        const float distance = radius / std::sin(glm::radians(0.5f * c.fovDegrees)) * 1.05f;
-        const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
+        const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)); // from the centre to the camera
+        const glm::vec3 forward = -direction;
+        const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+        const glm::vec3 up = glm::cross(right, forward);
+        const float slope = std::tan(glm::radians(0.5f * c.fovDegrees)) * kFill;
+        // A corner at (x, y) across and z0 along the view from the centre is inside the frame from a
+        // distance d when |x| and |y| are at most slope * (z0 + d).
+        float distance = 0.0f;
+        float nearest = std::numeric_limits<float>::max();
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 corner((i & 1) ? out_.boundsMax.x : out_.boundsMin.x, (i & 2) ? out_.boundsMax.y : out_.boundsMin.y,
+                                   (i & 4) ? out_.boundsMax.z : out_.boundsMin.z);
+            const glm::vec3 offset = corner - centre;
+            const float z0 = glm::dot(offset, forward);
+            const float across = std::max(std::abs(glm::dot(offset, right)), std::abs(glm::dot(offset, up)));
+            distance = std::max({distance, across / slope - z0, 1e-3f * radius - z0});
+            nearest = std::min(nearest, z0);
+        }
         c.position = centre + direction * distance;
-        const glm::vec2 yp = yawPitchOf(-direction);
+        const glm::vec2 yp = yawPitchOf(forward);
         c.yawDegrees = yp.x;
         c.pitchDegrees = yp.y;
-        c.nearPlane = std::max(distance - radius, distance) * 1.0e-3f;
-        c.nearPlane = std::max(c.nearPlane, (distance - radius) * 0.5f);
+        c.nearPlane = std::max((nearest + distance) * 0.5f, distance * 1.0e-3f);
         c.farPlane = (distance + radius) * 2.0f;
         out_.cameras.push_back(c);
     }

@@ -17,7 +17,7 @@ catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
 
 # Renders: <fixture><form>_<camera>.exr for the three forms of each fixture.
 foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "cameras;framing" "geometry;front"
-             "textures;front" "materials;front" "warnings;front")
+             "textures;front" "materials;front" "warnings;front" "unit_cube;framing")
     list(GET spec 0 name)
     list(GET spec 1 camera)
     foreach(form "" "_embedded" "_glb")
