@@ -50,6 +50,20 @@ add_test(NAME "gltf: -v prints the load time and the triangle count"
                  ${BIN}/${GLTF_STAGE} --backend egl --size 64x64 --frames 1 -v --scene ${GLTF_FIXTURES}/geometry.glb)
 set_tests_properties("gltf: -v prints the load time and the triangle count" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
 
+# The black-background warning: once, with the key, on a unit cube on nothing (62% of the frame is
+# black); never on the built-in room from any of its cameras (at most a few % black).
+add_test(NAME "gltf: a model on a black background warns about the key once"
+         COMMAND ${EXPECT} 0 "^warning: [0-9]+% of the frame is black \\(the background\\), which pulls the key down to Ya = [0-9.e+-]+ \\(the rest of the frame alone: 0\\.[0-9]+\\)" --
+                 ${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 3 --scene ${GLTF_FIXTURES}/unit_cube.glb)
+set_tests_properties("gltf: a model on a black background warns about the key once" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+add_test(NAME "gltf: the warning comes once in three frames"
+         COMMAND sh -c "n=$(${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 3 --scene ${GLTF_FIXTURES}/unit_cube.glb 2>&1 | grep -c 'of the frame is black'); echo \"$n warning(s)\"; [ \"$n\" = 1 ]")
+set_tests_properties("gltf: the warning comes once in three frames" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+foreach(camera default floor lights crates dark)
+    add_test(NAME "gltf: the built-in room does not warn about a black background (${camera})"
+             COMMAND sh -c "out=$(${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 1 --camera ${camera} 2>&1) || { echo \"$out\"; exit 1; }; echo \"$out\"; case \"$out\" in *'of the frame is black'*) echo FAIL: warned; exit 1;; esac")
+endforeach()
+
 # Bad input through the program: exit 1, the file and the fault, and no output file.
 set(GLTF_REFUSED ${CMAKE_CURRENT_SOURCE_DIR}/gltf/expect_refused.sh)
 foreach(case
