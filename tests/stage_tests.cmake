@@ -115,6 +115,9 @@ foreach(case
         "--input;/no/such/file.exr;--input"
         "--shader-dir;/no/such/dir;--shader-dir"
         "--resize-sequence;10x;not WIDTHxHEIGHT"
+        "--resize-sequence;64x64,;--resize-sequence 64x64,: size 2 is empty"
+        "--resize-sequence;,64x64;size 1 is empty"
+        "--resize-sequence;64x64,,32x32;size 2 is empty"
         "--no-such-option;;no-such-option")
     list(GET case 0 option)
     list(GET case 1 value)

@@ -124,14 +124,8 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& stage
         if (!findView(options.view)) {
             throw UsageError("--view " + options.view + ": unknown view (choose from " + allViewNames() + ")");
         }
-        if (!resizeSequence.empty()) {
-            std::stringstream list(resizeSequence);
-            for (std::string item; std::getline(list, item, ',');) {
-                // 0x0 stands for a minimised window; anything else must be a real size.
-                const auto next = item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item);
-                options.resizeSequence.push_back(next);
-            }
-        }
+        if (!resizeSequence.empty())
+            options.resizeSequence = parseResizeSequence(resizeSequence, [](const std::string& item) { return parseSize(item); });
     } catch (const CLI::CallForHelp&) {
         std::cout << app.help();
         return 0;

@@ -1,6 +1,8 @@
 // The range check for numeric options; see cli_range.hpp.
 #include "t10/cli_range.hpp"
 
+#include "t10/error.hpp"
+
 #include <cstdio>
 #include <string>
 
@@ -38,6 +40,22 @@ CLI::Validator inRange(double lo, double hi, bool integer) {
             return std::string();
         },
         range);
+}
+
+std::vector<std::pair<int, int>> parseResizeSequence(
+    const std::string& text, const std::function<std::pair<int, int>(const std::string&)>& parseSize) {
+    std::vector<std::pair<int, int>> sizes;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty())
+            throw UsageError("--resize-sequence " + text + ": size " + std::to_string(sizes.size() + 1) +
+                             " is empty (a comma too many?)");
+        sizes.push_back(item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item));
+        if (comma == std::string::npos) return sizes;
+        start = comma + 1;
+    }
 }
 
 } // namespace t10

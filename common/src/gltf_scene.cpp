@@ -4,6 +4,7 @@
 
 #include "t10/error.hpp"
 #include "t10/gltf_schema.hpp"
+#include "t10/stb_guard.hpp"
 #include "t10/file.hpp"
 #include "t10/tga.hpp"
 
@@ -60,43 +61,6 @@ struct ImageContext {
     std::size_t pixels = 0; // all images so far
 };
 
-// Debian 12's stb_image (2022) trusts a JPEG's Huffman table counts: a DHT segment whose 16 counts
-// add up to more than 256 makes it write past its tables (found by fuzz/gltf; fixed upstream in
-// 2.28). Walks the JPEG's segments, entropy-coded data included, and refuses such a table before
-// stb sees the file.
-bool jpegHuffmanTablesValid(const unsigned char* bytes, std::size_t size) {
-    std::size_t i = 2; // after SOI
-    while (i + 1 < size) {
-        if (bytes[i] != 0xFF) {
-            ++i; // entropy-coded data: skip to the next marker
-            continue;
-        }
-        const unsigned char marker = bytes[i + 1];
-        if (marker == 0xFF) { // fill byte
-            ++i;
-            continue;
-        }
-        i += 2;
-        // Stuffed zero, restart markers, SOI, EOI and TEM have no length.
-        if (marker == 0x00 || (marker >= 0xD0 && marker <= 0xD9) || marker == 0x01) continue;
-        if (i + 2 > size) return true; // truncated: stb reports it
-        const std::size_t length = (std::size_t(bytes[i]) << 8) | bytes[i + 1];
-        if (length < 2) return false;
-        if (marker == 0xC4) {
-            std::size_t at = i + 2;
-            const std::size_t end = std::min(size, i + length);
-            while (at + 17 <= end) {
-                std::size_t count = 0;
-                for (int k = 1; k <= 16; ++k) count += bytes[at + static_cast<std::size_t>(k)];
-                if (count > 256) return false;
-                at += 17 + count;
-            }
-        }
-        i += length;
-    }
-    return true;
-}
-
 bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
     auto& context = *static_cast<ImageContext*>(user);
@@ -119,11 +83,8 @@ bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string*
             return false;
         }
     } else {
-        const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
-        const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
-        if (!png && !jpeg) return refuse("not a PNG or JPEG file (TGA images need a .tga name or image/x-tga)");
-        if (jpeg && !jpegHuffmanTablesValid(bytes, static_cast<std::size_t>(size)))
-            return refuse("corrupt JPEG (a Huffman table with more than 256 codes)");
+        if (const auto fault = stbInputFault(bytes, static_cast<std::size_t>(size)))
+            return refuse(*fault + (fault->rfind("not a", 0) == 0 ? " (TGA images need a .tga name or image/x-tga)" : ""));
         int w = 0;
         int h = 0;
         int channels = 0;
