@@ -21,24 +21,26 @@ all: build
 help:
 	@echo "make run    open the final stage in a window, or render every stage headless into $(OUT)/"
 	@echo "make test   build and run every test (ctest)"
-	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
-	@echo "make clean  remove $(BUILD)/, build-release/ and $(OUT)/"
-	@echo "make build  install what is missing, configure ($(PRESET) preset) and build into $(BUILD)/"
+	@echo "make build  install what is missing, configure ($(PRESET) preset) and build into $(BUILD)/ (also: make, make all)"
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
-	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
-	@echo "make fuzz-gltf  fuzz the glTF loader (clang, ASan, UBSan) for FUZZ_GLTF_SECONDS (default 60)"
-	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
+	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
+	@echo "make clean  remove $(BUILD)/, build-release/ and $(OUT)/"
+	@echo "make views  render every view (--view) of every stage into $(OUT)/views/, with each view's line in views.txt"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
-	@echo "make site-serve  build the site and serve it on http://127.0.0.1:4000/ (SITE_PORT=N for another port)"
-	@echo "make views  render every view (--view) of every stage into $(OUT)/views/"
+	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
+	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
+	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
+	@echo "make fuzz   run every fuzz target FUZZ_SECONDS each (default 60; FUZZ_TARGETS=\"gltf ...\" for some)"
+	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
+	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
+	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
 	@echo "make check PART=1|2|3 [DIR=folder]  build your part, grade it, say what to fix first (exit 0 only at 100)"
 	@echo "make run STAGE=student_partN  run your part (window, or headless into $(OUT)/); any stage name works"
 	@echo "make help   this list"
-	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || echo $$p; done); \
@@ -95,12 +97,19 @@ bench-passes: deps
 site: configure
 	cmake --build $(BUILD) --target site
 
-site-serve: site
-	@port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
-	python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
+# site-serve rebuilds the site only when something it is made from (site/, the programs in $(BIN)/)
+# is newer than its index.html, then execs the server, so that stopping make stops the server too.
+site-serve: configure
+	@index=$(BUILD)/site/index.html; \
+	if [ ! -f $$index ] || [ -n "$$(find site $(BIN) -newer $$index -print -quit 2>/dev/null)" ]; then \
+	    cmake --build $(BUILD) --target site || exit 1; \
+	else echo "$(BUILD)/site is up to date"; fi; \
+	port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
+	exec python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
 
-# Fuzzing (fuzz/): libFuzzer targets built with clang, ASan and UBSan into $(BUILD)/fuzz/, each run for
-# FUZZ_SECONDS (default 60); FUZZ_TARGETS="tga exr" picks some. Not part of `make test`.
+# Fuzzing (fuzz/): every libFuzzer target (tga, exr, cli, gltf) built with clang, ASan and UBSan into
+# $(BUILD)/fuzz/, each run for FUZZ_SECONDS (default 60); FUZZ_TARGETS="tga gltf" picks some. Not part
+# of `make test`.
 .PHONY: fuzz fuzz-build
 FUZZ_SECONDS ?= 60
 fuzz-build: PACKAGES += clang libclang-rt-14-dev
@@ -133,18 +142,6 @@ bench: deps
 	gnuplot -e "dir='$(OUT)/bench'" tools/bench/plot.gp
 	@echo "wrote $(OUT)/bench/bench.png"
 
-# The glTF loader's fuzzer (fuzz/gltf/): clang, ASan and UBSan into $(BUILD)/fuzz-gltf/, seeded with the
-# loader's test fixtures, run for FUZZ_GLTF_SECONDS (default 60; the loader was run for 1800 before it
-# was called done). Not part of `make test`.
-.PHONY: fuzz-gltf
-FUZZ_GLTF_SECONDS ?= 60
-fuzz-gltf: PACKAGES += clang libclang-rt-14-dev
-fuzz-gltf: build
-	@[ -f $(BUILD)/fuzz-gltf/build.ninja ] || CXX=clang++ cmake -S fuzz/gltf -B $(BUILD)/fuzz-gltf -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build $(BUILD)/fuzz-gltf -j $(JOBS)
-	$(BIN)/make_gltf_fixtures $(BUILD)/fuzz-gltf/fixtures >/dev/null
-	fuzz/gltf/run.sh $(BUILD)/fuzz-gltf $(BUILD)/fuzz-gltf/fixtures $(FUZZ_GLTF_SECONDS)
-
 # The glTF loader's speed: a generated scene of about one million triangles loaded by a release build
 # (tools/bench_gltf_load; not a test). The loader must stay under 2 s on the 2-core CI machine.
 .PHONY: bench-gltf
@@ -155,20 +152,27 @@ bench-gltf: deps
 	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
 
 # Every view of every stage (--view), one frame each, into $(OUT)/views/<stage>/<view>.png; the views
-# a stage lacks are skipped (the program refuses them with exit code 2).
+# a stage lacks are skipped (the program refuses them with exit code 2). Each view's one-line text (Ya,
+# dg, counts: what the program prints as "view NAME: ...") goes into $(OUT)/views/views.txt as
+# "<stage>/<view>.png: <text>", written whole at the end.
 VIEW_NAMES := final hdr luminance key bloom0 bloom1 blur ev nan
 .PHONY: views
 views: build
-	@for stage in $(STAGES); do \
+	@mkdir -p $(OUT)/views; : >$(OUT)/views/views.txt.tmp; \
+	for stage in $(STAGES); do \
 	    mkdir -p $(OUT)/views/$$stage; \
 	    for view in $(VIEW_NAMES); do \
 	        $(BIN)/$$stage --headless --frames 1 --size $(or $(VIEW_SIZE),640x360) --view $$view \
-	            --output $(OUT)/views/$$stage/$$view.png >/dev/null 2>$(OUT)/views/error.txt; \
+	            --output $(OUT)/views/$$stage/$$view.png >$(OUT)/views/out.txt 2>$(OUT)/views/error.txt; \
 	        code=$$?; \
-	        if [ $$code -eq 0 ]; then echo "  $(OUT)/views/$$stage/$$view.png"; \
+	        if [ $$code -eq 0 ]; then \
+	            echo "  $(OUT)/views/$$stage/$$view.png"; \
+	            line=$$(sed -n "s/^view $$view: //p" $(OUT)/views/out.txt); \
+	            echo "$$stage/$$view.png: $${line:-(the frame as shown; no line)}" >>$(OUT)/views/views.txt.tmp; \
 	        elif [ $$code -ne 2 ]; then cat $(OUT)/views/error.txt; exit 1; fi; \
 	    done; \
-	done; rm -f $(OUT)/views/error.txt
+	done; rm -f $(OUT)/views/error.txt $(OUT)/views/out.txt; mv $(OUT)/views/views.txt.tmp $(OUT)/views/views.txt; \
+	echo "  $(OUT)/views/views.txt"
 
 # Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
 # [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian

@@ -61,6 +61,20 @@ add_test(NAME "stage diff: rejects a step block that is never closed"
          COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new 1 1)
 
+# --- make help names every target of the Makefile and every `make NAME` of the README. ----------
+set(MAKE_HELP ${CMAKE_CURRENT_SOURCE_DIR}/make_help.py)
+add_test(NAME "make help: lists every target" COMMAND ${EXPECT} 0 "ok: make help lists all" --
+         ${Python3_EXECUTABLE} ${MAKE_HELP} ${PROJECT_SOURCE_DIR})
+# The check can fail: a copy of the Makefile whose help lost the line of `make fuzz`.
+file(READ ${PROJECT_SOURCE_DIR}/Makefile makefile_text)
+string(REGEX REPLACE "\t@echo \"make fuzz  [^\n]*\n" "" makefile_text "${makefile_text}")
+file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/make_help_check/Makefile "${makefile_text}")
+file(COPY ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_CURRENT_BINARY_DIR}/make_help_check)
+add_test(NAME "make help: the check rejects a missing target"
+         COMMAND ${EXPECT} 1 "make help does not list `make fuzz`" --
+                 ${Python3_EXECUTABLE} ${MAKE_HELP} ${CMAKE_CURRENT_BINARY_DIR}/make_help_check)
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/Makefile ${PROJECT_SOURCE_DIR}/README.md)
+
 # --- Layers: the folders of common/ are its layers; each includes only the ones below it. -------
 set(LAYERS ${CMAKE_CURRENT_SOURCE_DIR}/layers.py)
 set(T10_LAYER_FOLDERS base platform content frame optional panel)
@@ -148,6 +162,9 @@ foreach(case
         "--input;/no/such/file.exr;--input"
         "--shader-dir;/no/such/dir;--shader-dir"
         "--resize-sequence;10x;not WIDTHxHEIGHT"
+        "--resize-sequence;64x64,;--resize-sequence 64x64,: size 2 is empty"
+        "--resize-sequence;,64x64;size 1 is empty"
+        "--resize-sequence;64x64,,32x32;size 2 is empty"
         "--no-such-option;;no-such-option")
     list(GET case 0 option)
     list(GET case 1 value)

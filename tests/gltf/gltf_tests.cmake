@@ -17,7 +17,7 @@ catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
 
 # Renders: <fixture><form>_<camera>.exr for the three forms of each fixture.
 foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "cameras;framing" "geometry;front"
-             "textures;front" "materials;front" "warnings;front")
+             "textures;front" "materials;front" "warnings;front" "unit_cube;framing")
     list(GET spec 0 name)
     list(GET spec 1 camera)
     foreach(form "" "_embedded" "_glb")
@@ -50,6 +50,20 @@ add_test(NAME "gltf: -v prints the load time and the triangle count"
                  ${BIN}/${GLTF_STAGE} --backend egl --size 64x64 --frames 1 -v --scene ${GLTF_FIXTURES}/geometry.glb)
 set_tests_properties("gltf: -v prints the load time and the triangle count" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
 
+# The black-background warning: once, with the key, on a unit cube on nothing (62% of the frame is
+# black); never on the built-in room from any of its cameras (at most a few % black).
+add_test(NAME "gltf: a model on a black background warns about the key once"
+         COMMAND ${EXPECT} 0 "^warning: [0-9]+% of the frame is black \\(the background\\), which pulls the key down to Ya = [0-9.e+-]+ \\(the rest of the frame alone: 0\\.[0-9]+\\)" --
+                 ${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 3 --scene ${GLTF_FIXTURES}/unit_cube.glb)
+set_tests_properties("gltf: a model on a black background warns about the key once" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+add_test(NAME "gltf: the warning comes once in three frames"
+         COMMAND sh -c "n=$(${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 3 --scene ${GLTF_FIXTURES}/unit_cube.glb 2>&1 | grep -c 'of the frame is black'); echo \"$n warning(s)\"; [ \"$n\" = 1 ]")
+set_tests_properties("gltf: the warning comes once in three frames" PROPERTIES FIXTURES_REQUIRED gltf_fixtures)
+foreach(camera default floor lights crates dark)
+    add_test(NAME "gltf: the built-in room does not warn about a black background (${camera})"
+             COMMAND sh -c "out=$(${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 1 --camera ${camera} 2>&1) || { echo \"$out\"; exit 1; }; echo \"$out\"; case \"$out\" in *'of the frame is black'*) echo FAIL: warned; exit 1;; esac")
+endforeach()
+
 # Bad input through the program: exit 1, the file and the fault, and no output file.
 set(GLTF_REFUSED ${CMAKE_CURRENT_SOURCE_DIR}/gltf/expect_refused.sh)
 foreach(case
@@ -67,7 +81,13 @@ foreach(case
         "bad_cycle_root.gltf;which is not a root"
         "bad_cycle_sceneless.gltf;node 1 is part of a cycle"
         "bad_required_draco.gltf;requires the extension KHR_draco_mesh_compression"
-        "bad_wrong_type.gltf;bad_wrong_type.gltf: 'count' property is not a positive integer")
+        "bad_wrong_type.gltf;bad_wrong_type.gltf: accessors\\[0\\].count: expected an integer >= 1"
+        "schema_normal_scale_string.gltf;materials\\[0\\].normalTexture.scale: expected a number, got a string"
+        "schema_mesh_name_number.gltf;meshes\\[0\\].name: expected a string, got a number 1"
+        "schema_pbr_not_object.gltf;materials\\[0\\].pbrMetallicRoughness: expected an object"
+        "schema_texture_index_negative.gltf;materials\\[0\\].normalTexture.index: expected an integer >= 0, got -1"
+        "schema_primitives_object.gltf;meshes\\[0\\].primitives: expected an array, got an object"
+        "nothing_points.gltf;nothing to draw: the scene's only primitive is points or lines")
     list(GET case 0 file)
     list(GET case 1 message)
     add_test(NAME "gltf refuses: ${file}"

@@ -245,7 +245,7 @@ TEST_CASE("malformed files are refused with the file name and the fault", "[gltf
     };
     const Case cases[] = {
         {"bad_json.gltf", "bad_json.gltf: .*parse error at line 1, column 43"},
-        {"bad_wrong_type.gltf", "bad_wrong_type.gltf: 'count' property is not a positive integer"},
+        {"bad_wrong_type.gltf", "bad_wrong_type.gltf: accessors\\[0\\]\\.count: expected an integer >= 1, got a string \"three\""},
         {"bad_header.glb", "bad_header.glb: Invalid glTF binary"},
         {"bad_missing_buffer.gltf", "bad_missing_buffer.gltf: File not found : no_such_file.bin"},
         {"bad_short_buffer.gltf", "bad_short_buffer.gltf: File size mismatch : .*short.bin, requestedBytes 36, but got 20"},
@@ -275,6 +275,77 @@ TEST_CASE("malformed files are refused with the file name and the fault", "[gltf
     }
     // The good file they are variations of loads.
     CHECK(t10::loadGltfScene(fixture("good_triangle.gltf")).triangleCount == 1);
+}
+
+// Messages name the file and the JSON path; each regex is matched against the whole message.
+TEST_CASE("wrongly typed or out-of-range properties are refused with their JSON path", "[gltf][schema]") {
+    struct Case {
+        const char* file;
+        const char* message;
+    };
+    const Case cases[] = {
+        // The kinds of tinygltf's wrongTypes set, which tinygltf 2.7 itself accepts with defaults.
+        {"normal_scale_string.gltf", R"(materials\[0\]\.normalTexture\.scale: expected a number, got a string "not a number")"},
+        {"mesh_name_number.gltf", R"(meshes\[0\]\.name: expected a string, got a number 1)"},
+        {"pbr_not_object.gltf", R"(materials\[0\]\.pbrMetallicRoughness: expected an object, got a string "shiny")"},
+        {"texture_index_negative.gltf", R"(materials\[0\]\.normalTexture\.index: expected an integer >= 0, got -1)"},
+        {"primitives_object.gltf", R"(meshes\[0\]\.primitives: expected an array, got an object)"},
+        {"primitives_object.glb", R"(meshes\[0\]\.primitives: expected an array, got an object)"},
+        // One per other kind of property the loader reads.
+        {"index_out_of_range.gltf", R"(meshes\[0\]\.primitives\[0\]\.material: materials\[5\] does not exist \(the file has 1\))"},
+        {"integer_fraction.gltf", R"(accessors\[0\]\.byteOffset: expected an integer >= 0, got a number 1\.5)"},
+        {"integer_below_minimum.gltf", R"(accessors\[0\]\.count: expected an integer >= 1, got 0)"},
+        {"array_object.gltf", R"(nodes: expected an array, got an object)"},
+        {"array_length.gltf", R"(nodes\[0\]\.translation: expected 3 numbers, got 2)"},
+        {"number_string.gltf", R"(nodes\[0\]\.scale\[1\]: expected a number, got a string "2")"},
+        {"number_range.gltf", R"(materials\[0\]\.pbrMetallicRoughness\.metallicFactor: expected a number from 0 to 1, got 2)"},
+        {"number_exclusive.gltf", R"(cameras\[0\]\.perspective\.yfov: expected a number above 0, got 0)"},
+        {"enum_integer.gltf", R"(meshes\[0\]\.primitives\[0\]\.mode: expected one of 0, 1, 2, 3, 4, 5, 6, got a number 7)"},
+        {"enum_string.gltf", R"(materials\[0\]\.alphaMode: expected one of "OPAQUE", "MASK", "BLEND", got a string "opaque")"},
+        {"enum_sampler.gltf", R"(samplers\[0\]\.wrapS: expected one of 33071, 33648, 10497, got a number 1)"},
+        {"boolean_string.gltf", R"(materials\[0\]\.doubleSided: expected true or false, got a string "yes")"},
+        {"string_number.gltf", R"(images\[0\]\.uri: expected a string, got a number 5)"},
+        {"object_array.gltf", R"(materials\[0\]\.normalTexture: expected an object, got an array)"},
+        {"required_missing.gltf", R"(accessors\[0\]\.componentType: missing \(the schema requires it\))"},
+        {"extension_number.gltf",
+         R"(materials\[0\]\.extensions\.KHR_materials_emissive_strength\.emissiveStrength: expected a number, got a string "2")"},
+        {"light_index.gltf", R"(nodes\[2\]\.extensions\.KHR_lights_punctual\.light: KHR_lights_punctual light 3 does not exist \(the file has 1\))"},
+        {"light_type.gltf", R"(extensions\.KHR_lights_punctual\.lights\[0\]\.type: expected one of "directional", "point", "spot", got a string "area")"},
+        {"texture_info_index.gltf", R"(textures\[0\]\.source: images\[4\] does not exist \(the file has 1\))"},
+        {"scene_index.gltf", R"(scene: scenes\[1\] does not exist \(the file has 1\))"},
+        {"children_index.gltf", R"(nodes\[0\]\.children\[0\]: expected an integer >= 0, got -1)"},
+    };
+    // The file they are variations of loads: the checks accept every property it uses.
+    const t10::SceneDescription base = t10::loadGltfScene(fixture("schema_base.gltf"));
+    CHECK(base.triangleCount == 1);
+    CHECK(base.lights.size() == 1);
+    CHECK(base.materials[0].normalTexture >= 0);
+    for (const Case& c : cases) {
+        const std::string file = std::string("schema_") + c.file;
+        INFO(file);
+        std::string message;
+        try {
+            t10::loadGltfScene(fixture(file));
+        } catch (const t10::Error& error) {
+            message = error.what();
+        }
+        INFO(message);
+        // "<path of the file>: <JSON path>: <fault>", on one line.
+        CHECK(std::regex_search(message, std::regex("^.*" + file + ": " + c.message + "$")));
+    }
+}
+
+TEST_CASE("a scene that draws nothing is refused with why", "[gltf]") {
+    CHECK_THROWS_WITH(t10::loadGltfScene(fixture("nothing_points.gltf")),
+                      Catch::EndsWith("nothing_points.gltf: nothing to draw: the scene's only primitive is points or "
+                                      "lines, which are not drawn"));
+    CHECK_THROWS_WITH(t10::loadGltfScene(fixture("nothing_no_meshes.gltf")),
+                      Catch::EndsWith("nothing_no_meshes.gltf: nothing to draw: the file has no meshes"));
+    CHECK_THROWS_WITH(t10::loadGltfScene(fixture("nothing_skipped.gltf")),
+                      Catch::EndsWith("nothing to draw: every primitive was skipped (1 primitive: 0 points or lines, "
+                                      "1 without a whole triangle)"));
+    // The warnings fixture has points and lines too, but also a square: it loads.
+    CHECK(t10::loadGltfScene(fixture("warnings.glb")).triangleCount == 2);
 }
 
 TEST_CASE("limits: too many triangles after instancing are refused", "[gltf]") {

@@ -215,3 +215,25 @@ TEST_CASE("double-sided, single-sided, MASK and BLEND over an emissive backdrop"
         CHECK(blended.b == Approx(0.5f).epsilon(0.01));
     }
 }
+
+// The framing camera fills most of the frame with the scene's bounds: an emissive unit cube (red 4,
+// nothing else in the file) covers at least a third of the 320x180 frame, and none of it is cut off
+// by an edge. Emission is exact to 0.1% in half floats; the threshold 2 (half of it) counts every
+// pixel the cube covers and none of the black background.
+TEST_CASE("framing camera: a unit cube covers at least a third of the frame, whole", "[gltf][render][framing]") {
+    for (const char* form : kForms) {
+        INFO("form '" << form << "'");
+        const Render r = load("unit_cube", form, "framing");
+        int covered = 0;
+        for (int y = 0; y < r.hdr.height; ++y)
+            for (int x = 0; x < r.hdr.width; ++x)
+                if (r.hdr.at(x, y, 0) > 2.0f) ++covered;
+        const double share = double(covered) / double(r.hdr.width * r.hdr.height);
+        INFO("the cube covers " << share * 100.0 << "% of the frame");
+        CHECK(share >= 1.0 / 3.0);
+        for (int x = 0; x < r.hdr.width; ++x)
+            CHECK((r.hdr.at(x, 0, 0) < 2.0f && r.hdr.at(x, r.hdr.height - 1, 0) < 2.0f));
+        for (int y = 0; y < r.hdr.height; ++y)
+            CHECK((r.hdr.at(0, y, 0) < 2.0f && r.hdr.at(r.hdr.width - 1, y, 0) < 2.0f));
+    }
+}

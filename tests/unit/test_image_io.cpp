@@ -102,6 +102,16 @@ TEST_CASE("PNG errors name the file", "[image_io]") {
     bytes.resize(bytes.size() / 2);
     writeText(truncated, std::string(bytes.begin(), bytes.end()));
     requireThrowsNaming([](const std::string& p) { t10::readPng(p); }, truncated);
+    // A JPEG named .png gets the glTF loader's JPEG checks before stb: a Huffman table of 16 x 255
+    // codes (Debian's stb would write past its tables) is refused by name, and so is a GIF.
+    const std::string jpeg = scratchPath("huffman.png");
+    std::string dht = "\xFF\xD8\xFF\xC4";
+    dht += std::string("\x00\x13\x00", 3) + std::string(16, '\xFF');
+    writeText(jpeg, dht);
+    CHECK_THROWS_WITH(t10::readPng(jpeg), jpeg + ": cannot read PNG: corrupt JPEG (a Huffman table with more than 256 codes)");
+    const std::string gif = scratchPath("image.png");
+    writeText(gif, "GIF89a\x01\x00\x01\x00\x00\x00\x00;");
+    CHECK_THROWS_WITH(t10::readPng(gif), gif + ": cannot read PNG: not a PNG or JPEG file");
     requireThrowsNaming([](const std::string& p) { t10::writePng(p, makeImage8(2, 2, 3)); },
                         scratchPath("no_such_dir/out.png"));
     requireThrowsNaming([](const std::string& p) { t10::writePng(p, t10::Image8{}); }, scratchPath("empty.png"));

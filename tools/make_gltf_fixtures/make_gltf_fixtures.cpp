@@ -10,6 +10,7 @@
 #include "gltf_builder.hpp"
 
 #include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
 #include <stb_image_write.h>
 
 #include <cmath>
@@ -597,6 +598,129 @@ void malformed(const fs::path& dir) {
     }
 }
 
+// Wrongly typed or out-of-range properties, one per file: schema_base.gltf is a triangle that uses
+// every kind of property the loader reads (material with textures and extensions, sampler, image,
+// camera, light), and each schema_<case>.gltf changes one value of it (a JSON pointer and the new
+// value; null removes it). tests/gltf/ names the JSON path each must be refused with. The first five
+// are the kinds of tinygltf's own wrongTypes set (written here, not copied).
+void schema(const fs::path& dir) {
+    using Json = nlohmann::json;
+    const auto bytes = triangleBytes();
+    const std::vector<unsigned char> image = png(halves(128, 128, 255, 128, 128, 255));
+    const Json base = {
+        {"asset", {{"version", "2.0"}}},
+        {"extensionsUsed", {"KHR_lights_punctual", "KHR_materials_emissive_strength"}},
+        {"scene", 0},
+        {"scenes", {{{"nodes", {0, 1, 2}}}}},
+        {"nodes",
+         {{{"name", "triangle"}, {"mesh", 0}, {"scale", {1, 1, 1}}},
+          {{"camera", 0}, {"translation", {0.5, 0.5, 3}}, {"rotation", {0, 0, 0, 1}}},
+          {{"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}, {"translation", {0, 2, 2}}}}},
+        {"meshes", {{{"name", "triangle"}, {"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1},
+                                                             {"material", 0}, {"mode", 4}}}}}}},
+        {"materials",
+         {{{"name", "textured"},
+           {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}}},
+           {"normalTexture", {{"index", 0}, {"scale", 1}}},
+           {"emissiveFactor", {1, 1, 1}},
+           {"alphaMode", "OPAQUE"},
+           {"doubleSided", false},
+           {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 2}}}}}}}},
+        {"textures", {{{"source", 0}, {"sampler", 0}}}},
+        {"samplers", {{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}}},
+        {"images", {{{"uri", "data:image/png;base64," + Builder::base64(image)}}}},
+        {"cameras", {{{"name", "front"}, {"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}}},
+        {"extensions", {{"KHR_lights_punctual", {{"lights", {{{"type", "point"}, {"intensity", 5}}}}}}}},
+        {"buffers", {{{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + Builder::base64(bytes)}}}},
+        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}}, {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 6}}}},
+        {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+                       {{"bufferView", 1}, {"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}}}},
+    };
+    writeText(dir / "schema_base.gltf", base.dump(1));
+    struct Change {
+        const char* name;
+        const char* pointer;
+        Json value;
+    };
+    const Change changes[] = {
+        // tinygltf's wrongTypes kinds
+        {"normal_scale_string", "/materials/0/normalTexture/scale", "not a number"},
+        {"mesh_name_number", "/meshes/0/name", 1},
+        {"pbr_not_object", "/materials/0/pbrMetallicRoughness", "shiny"},
+        {"texture_index_negative", "/materials/0/normalTexture/index", -1},
+        {"primitives_object", "/meshes/0/primitives", {{"attributes", {{"POSITION", 0}}}}},
+        // one per other kind the loader reads
+        {"index_out_of_range", "/meshes/0/primitives/0/material", 5},
+        {"integer_fraction", "/accessors/0/byteOffset", 1.5},
+        {"integer_below_minimum", "/accessors/0/count", 0},
+        {"array_object", "/nodes", Json::object()},
+        {"array_length", "/nodes/0/translation", {1, 2}},
+        {"number_string", "/nodes/0/scale/1", "2"},
+        {"number_range", "/materials/0/pbrMetallicRoughness/metallicFactor", 2},
+        {"number_exclusive", "/cameras/0/perspective/yfov", 0},
+        {"enum_integer", "/meshes/0/primitives/0/mode", 7},
+        {"enum_string", "/materials/0/alphaMode", "opaque"},
+        {"enum_sampler", "/samplers/0/wrapS", 1},
+        {"boolean_string", "/materials/0/doubleSided", "yes"},
+        {"string_number", "/images/0/uri", 5},
+        {"object_array", "/materials/0/normalTexture", {0}},
+        {"required_missing", "/accessors/0/componentType", nullptr},
+        {"extension_number", "/materials/0/extensions/KHR_materials_emissive_strength/emissiveStrength", "2"},
+        {"light_index", "/nodes/2/extensions/KHR_lights_punctual/light", 3},
+        {"light_type", "/extensions/KHR_lights_punctual/lights/0/type", "area"},
+        {"texture_info_index", "/textures/0/source", 4},
+        {"scene_index", "/scene", 1},
+        {"children_index", "/nodes/0/children", {-1}},
+    };
+    for (const Change& c : changes) {
+        Json json = base;
+        const Json::json_pointer pointer(c.pointer);
+        if (c.value.is_null()) json[pointer.parent_pointer()].erase(pointer.back());
+        else json[pointer] = c.value;
+        writeText(dir / (std::string("schema_") + c.name + ".gltf"), json.dump(1));
+    }
+    // The same check on a GLB's JSON chunk: primitives as an object.
+    Json json = base;
+    json["meshes"][0]["primitives"] = json["meshes"][0]["primitives"][0];
+    std::string text = json.dump();
+    while (text.size() % 4 != 0) text += ' ';
+    std::vector<unsigned char> glb = {'g', 'l', 'T', 'F', 2, 0, 0, 0};
+    auto u32 = [&](std::size_t v) {
+        for (int i = 0; i < 4; ++i) glb.push_back(static_cast<unsigned char>(v >> (8 * i)));
+    };
+    u32(20 + text.size());
+    u32(text.size());
+    glb.insert(glb.end(), {'J', 'S', 'O', 'N'});
+    glb.insert(glb.end(), text.begin(), text.end());
+    writeBytes(dir / "schema_primitives_object.glb", glb);
+}
+
+// Scenes that draw nothing, refused with the reason: only points; no meshes at all; every
+// primitive skipped (a triangle list of two indices).
+void nothingToDraw(const fs::path& dir) {
+    const auto ok = triangleBytes();
+    writeText(dir / "nothing_points.gltf",
+              triangleJson(ok, std::string(kTriangleViews) + kTriangleAccessors, R"("nodes": [{"mesh": 0}],)",
+                           R"(, "mode": 0)"));
+    writeText(dir / "nothing_no_meshes.gltf", std::string("{") + kTriangleHeader + R"("nodes": [{"name": "empty"}]})");
+    writeText(dir / "nothing_skipped.gltf",
+              triangleJson(ok, std::string(kTriangleViews) +
+                                   R"("accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"},
+                                        {"bufferView": 1, "componentType": 5123, "count": 2, "type": "SCALAR"}])"));
+}
+
+// A unit cube, emissive, centred on the origin, on nothing: the framing camera and the
+// black-background exposure warning are measured on it.
+void unitCube(const fs::path& dir) {
+    writeThreeWays(dir, "unit_cube", {}, [](Builder& b, const std::vector<int>&) {
+        const int m = b.material(emissive("glow", {1, 0.5f, 0.25f}, 4, b));
+        tinygltf::Node n;
+        n.name = "cube";
+        n.mesh = b.mesh("cube", {cube(b, m)});
+        b.node(n);
+    });
+}
+
 // The example the site shows (site/assets/models/bloom_example.glb): a dim grey corner (floor and
 // back wall) lit by one point light, with three emissive cubes of strength 2, 8 and 32 on the
 // floor; camera "front". The backdrop gives the tone map's key something to adapt to, so that
@@ -701,6 +825,9 @@ int main(int argc, char** argv) {
         materials(dir);
         warnings(dir);
         malformed(dir);
+        schema(dir);
+        nothingToDraw(dir);
+        unitCube(dir);
         std::cout << "wrote the glTF fixtures into " << dir.string() << "\n";
     } catch (const std::exception& error) {
         std::cerr << "make_gltf_fixtures: " << error.what() << "\n";

@@ -49,4 +49,20 @@ void refuseEmpty(std::initializer_list<const CLI::Option*> options) {
     }
 }
 
+std::vector<std::pair<int, int>> parseResizeSequence(
+    const std::string& text, const std::function<std::pair<int, int>(const std::string&)>& parseSize) {
+    std::vector<std::pair<int, int>> sizes;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty())
+            throw UsageError("--resize-sequence " + text + ": size " + std::to_string(sizes.size() + 1) +
+                             " is empty (a comma too many?)");
+        sizes.push_back(item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item));
+        if (comma == std::string::npos) return sizes;
+        start = comma + 1;
+    }
+}
+
 } // namespace t10

@@ -3,6 +3,8 @@
 #include "t10/gltf_scene.hpp"
 
 #include "t10/error.hpp"
+#include "t10/gltf_schema.hpp"
+#include "t10/stb_guard.hpp"
 #include "t10/file.hpp"
 #include "t10/tga.hpp"
 
@@ -59,43 +61,6 @@ struct ImageContext {
     std::size_t pixels = 0; // all images so far
 };
 
-// Debian 12's stb_image (2022) trusts a JPEG's Huffman table counts: a DHT segment whose 16 counts
-// add up to more than 256 makes it write past its tables (found by fuzz/gltf; fixed upstream in
-// 2.28). Walks the JPEG's segments, entropy-coded data included, and refuses such a table before
-// stb sees the file.
-bool jpegHuffmanTablesValid(const unsigned char* bytes, std::size_t size) {
-    std::size_t i = 2; // after SOI
-    while (i + 1 < size) {
-        if (bytes[i] != 0xFF) {
-            ++i; // entropy-coded data: skip to the next marker
-            continue;
-        }
-        const unsigned char marker = bytes[i + 1];
-        if (marker == 0xFF) { // fill byte
-            ++i;
-            continue;
-        }
-        i += 2;
-        // Stuffed zero, restart markers, SOI, EOI and TEM have no length.
-        if (marker == 0x00 || (marker >= 0xD0 && marker <= 0xD9) || marker == 0x01) continue;
-        if (i + 2 > size) return true; // truncated: stb reports it
-        const std::size_t length = (std::size_t(bytes[i]) << 8) | bytes[i + 1];
-        if (length < 2) return false;
-        if (marker == 0xC4) {
-            std::size_t at = i + 2;
-            const std::size_t end = std::min(size, i + length);
-            while (at + 17 <= end) {
-                std::size_t count = 0;
-                for (int k = 1; k <= 16; ++k) count += bytes[at + static_cast<std::size_t>(k)];
-                if (count > 256) return false;
-                at += 17 + count;
-            }
-        }
-        i += length;
-    }
-    return true;
-}
-
 bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
                const unsigned char* bytes, int size, void* user) {
     auto& context = *static_cast<ImageContext*>(user);
@@ -118,11 +83,8 @@ bool loadImage(tinygltf::Image* image, int index, std::string* err, std::string*
             return false;
         }
     } else {
-        const bool png = size >= 8 && std::memcmp(bytes, "\x89PNG\r\n\x1a\n", 8) == 0;
-        const bool jpeg = size >= 3 && bytes[0] == 0xFF && bytes[1] == 0xD8 && bytes[2] == 0xFF;
-        if (!png && !jpeg) return refuse("not a PNG or JPEG file (TGA images need a .tga name or image/x-tga)");
-        if (jpeg && !jpegHuffmanTablesValid(bytes, static_cast<std::size_t>(size)))
-            return refuse("corrupt JPEG (a Huffman table with more than 256 codes)");
+        if (const auto fault = stbInputFault(bytes, static_cast<std::size_t>(size)))
+            return refuse(*fault + (fault->rfind("not a", 0) == 0 ? " (TGA images need a .tga name or image/x-tga)" : ""));
         int w = 0;
         int h = 0;
         int channels = 0;
@@ -387,6 +349,7 @@ public:
         checkExtensions();
         convertMaterials();
         traverseNodes();
+        refuseNothingToDraw();
         if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn at rest");
         computeBounds();
         if (out_.lights.size() > kMaxLights)
@@ -400,6 +363,21 @@ private:
     void warn(const std::string& text) {
         if (std::find(out_.warnings.begin(), out_.warnings.end(), text) == out_.warnings.end())
             out_.warnings.push_back(text);
+    }
+
+    // A scene without a single triangle would render an empty frame and exit 0: refused, with why.
+    void refuseNothingToDraw() const {
+        if (out_.triangleCount > 0) return;
+        if (model_.meshes.empty()) fail("nothing to draw: the file has no meshes");
+        if (meshNodes_ == 0)
+            fail("nothing to draw: no node of the scene refers to a mesh (the file has " +
+                 std::to_string(model_.meshes.size()) + ")");
+        const std::string count = std::to_string(primitives_) + (primitives_ == 1 ? " primitive" : " primitives");
+        if (pointsOrLines_ == primitives_)
+            fail("nothing to draw: " + std::string(primitives_ == 1 ? "the scene's only primitive is" : "the scene's " + count + " are all") +
+                 " points or lines, which are not drawn");
+        fail("nothing to draw: every primitive was skipped (" + count + ": " + std::to_string(pointsOrLines_) +
+             " points or lines, " + std::to_string(primitives_ - pointsOrLines_) + " without a whole triangle)");
     }
 
     void checkExtensions() {
@@ -589,7 +567,10 @@ private:
             const tinygltf::Node& node = model_.nodes[n];
             const std::string what = "node " + std::to_string(index) + (node.name.empty() ? "" : " (" + node.name + ")");
             const glm::mat4 world = parentMatrix * nodeMatrix(node, what);
-            if (node.mesh >= 0) addMesh(node, world, what);
+            if (node.mesh >= 0) {
+                ++meshNodes_;
+                addMesh(node, world, what);
+            }
             if (node.camera >= 0) addCamera(node, world, what);
             addLight(node, world, what);
             if (node.skin >= 0) warn(what + " is skinned; it is drawn in its rest pose");
@@ -658,13 +639,21 @@ private:
         return out;
     }
 
+    // One primitive as a SceneMesh in world space; points and lines are counted and skipped.
     void addPrimitive(const tinygltf::Primitive& prim, const glm::mat4& world, const glm::mat3& normalMatrix,
                       bool mirrored, const std::string& what) {
+        ++primitives_;
         switch (prim.mode) {
-        case TINYGLTF_MODE_POINTS: warn("points are not drawn (" + what + " and any others)"); return;
+        case TINYGLTF_MODE_POINTS:
+            ++pointsOrLines_;
+            warn("points are not drawn (" + what + " and any others)");
+            return;
         case TINYGLTF_MODE_LINE:
         case TINYGLTF_MODE_LINE_LOOP:
-        case TINYGLTF_MODE_LINE_STRIP: warn("lines are not drawn (" + what + " and any others)"); return;
+        case TINYGLTF_MODE_LINE_STRIP:
+            ++pointsOrLines_;
+            warn("lines are not drawn (" + what + " and any others)");
+            return;
         case TINYGLTF_MODE_TRIANGLES:
         case TINYGLTF_MODE_TRIANGLE_STRIP:
         case TINYGLTF_MODE_TRIANGLE_FAN: break;
@@ -697,15 +686,7 @@ private:
         SceneMesh mesh;
         mesh.name = what;
         mesh.material = material;
-        mesh.vertices.resize(vertexCount); // positions.count is backed by the buffer
-        for (std::size_t i = 0; i < vertexCount; ++i) {
-            const glm::vec3 p(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
-            if (!finite(p)) fail(what + ": POSITION " + std::to_string(i) + " is not finite");
-            const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
-            if (!finite(w)) fail(what + ": POSITION " + std::to_string(i) + " is not finite in world space");
-            mesh.vertices[i].position = w;
-            mesh.vertices[i].uvBounds = glm::vec4(-kNoUvBound, -kNoUvBound, kNoUvBound, kNoUvBound);
-        }
+        readPositions(mesh, positions, world, what);
         auto optional = [&](const char* name, std::initializer_list<int> types, int components) {
             const int index = attribute(name);
             if (index < 0) return AccessorData{};
@@ -715,29 +696,62 @@ private:
                      std::to_string(vertexCount));
             return data;
         };
-        const AccessorData uvs = optional("TEXCOORD_0",
-                                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                           TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
-                                          2);
+        readUvs(mesh,
+                optional("TEXCOORD_0",
+                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                          TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT},
+                         2),
+                optional(kUvBoundsAttribute, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4), what);
+        const AccessorData normals = optional("NORMAL", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 3);
+        const AccessorData tangents = optional("TANGENT", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
+
+        if (mirrored)
+            for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+        readNormals(mesh, indices, normals, normalMatrix, what);
+        mesh.indices = std::move(indices);
+        if (tangents.count != 0 && normals.count != 0) readTangents(mesh, tangents, world, mirrored, what);
+        else generateTangents(mesh);
+        for (const SceneVertex& v : mesh.vertices) {
+            out_.boundsMin = haveBounds_ ? glm::min(out_.boundsMin, v.position) : v.position;
+            out_.boundsMax = haveBounds_ ? glm::max(out_.boundsMax, v.position) : v.position;
+            haveBounds_ = true;
+        }
+        out_.triangleCount += mesh.indices.size() / 3;
+        out_.vertexCount += mesh.vertices.size();
+        out_.meshes.push_back(std::move(mesh));
+    }
+
+    static void readPositions(SceneMesh& mesh, const AccessorData& positions, const glm::mat4& world,
+                              const std::string& what) {
+        mesh.vertices.resize(positions.count); // positions.count is backed by the buffer
+        for (std::size_t i = 0; i < positions.count; ++i) {
+            const glm::vec3 p(positions.get(i, 0), positions.get(i, 1), positions.get(i, 2));
+            if (!finite(p)) fail(what + ": POSITION " + std::to_string(i) + " is not finite");
+            const glm::vec3 w = glm::vec3(world * glm::vec4(p, 1.0f));
+            if (!finite(w)) fail(what + ": POSITION " + std::to_string(i) + " is not finite in world space");
+            mesh.vertices[i].position = w;
+            mesh.vertices[i].uvBounds = glm::vec4(-kNoUvBound, -kNoUvBound, kNoUvBound, kNoUvBound);
+        }
+    }
+
+    static void readUvs(SceneMesh& mesh, const AccessorData& uvs, const AccessorData& bounds, const std::string& what) {
         for (std::size_t i = 0; i < uvs.count; ++i) {
             // glTF's v = 0 is the image's top row; images here are stored bottom row first.
             const glm::vec2 uv(uvs.get(i, 0), 1.0f - uvs.get(i, 1));
             if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) fail(what + ": TEXCOORD_0 " + std::to_string(i) + " is not finite");
             mesh.vertices[i].uv = uv;
         }
-        const AccessorData bounds = optional(kUvBoundsAttribute, {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
         for (std::size_t i = 0; i < bounds.count; ++i) {
             const glm::vec4 b(bounds.get(i, 0), bounds.get(i, 1), bounds.get(i, 2), bounds.get(i, 3));
             mesh.vertices[i].uvBounds = glm::vec4(b.x, 1.0f - b.w, b.z, 1.0f - b.y);
         }
-        const AccessorData normals = optional("NORMAL", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 3);
-        const AccessorData tangents = optional("TANGENT", {TINYGLTF_COMPONENT_TYPE_FLOAT}, 4);
+    }
 
-        if (mirrored)
-            for (std::size_t t = 0; t + 2 < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
-
+    // The file's normals through the normal matrix, or (glTF: none given) flat shading, where each
+    // triangle gets its own three vertices and `indices` is renumbered to match.
+    static void readNormals(SceneMesh& mesh, std::vector<std::uint32_t>& indices, const AccessorData& normals,
+                            const glm::mat3& normalMatrix, const std::string& what) {
         if (normals.count == 0) {
-            // glTF: without normals, flat shading. Each triangle gets its own three vertices.
             std::vector<SceneVertex> flat;
             flat.reserve(indices.size());
             for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
@@ -751,43 +765,33 @@ private:
             }
             mesh.vertices = std::move(flat);
             for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i);
-        } else {
-            for (std::size_t i = 0; i < vertexCount; ++i) {
-                const glm::vec3 n(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
-                if (!finite(n)) fail(what + ": NORMAL " + std::to_string(i) + " is not finite");
-                const glm::vec3 w = normalMatrix * n;
-                mesh.vertices[i].normal = glm::length(w) > 0.0f ? glm::normalize(w) : glm::vec3(0, 0, 1);
-            }
+            return;
         }
-        mesh.indices = std::move(indices);
+        for (std::size_t i = 0; i < normals.count; ++i) {
+            const glm::vec3 n(normals.get(i, 0), normals.get(i, 1), normals.get(i, 2));
+            if (!finite(n)) fail(what + ": NORMAL " + std::to_string(i) + " is not finite");
+            const glm::vec3 w = normalMatrix * n;
+            mesh.vertices[i].normal = glm::length(w) > 0.0f ? glm::normalize(w) : glm::vec3(0, 0, 1);
+        }
+    }
 
-        if (tangents.count != 0 && normals.count != 0) {
-            const glm::mat3 linear(world);
-            for (std::size_t i = 0; i < vertexCount; ++i) {
-                const glm::vec3 t(tangents.get(i, 0), tangents.get(i, 1), tangents.get(i, 2));
-                const float sign = tangents.get(i, 3) < 0.0f ? -1.0f : 1.0f;
-                if (!finite(t)) fail(what + ": TANGENT " + std::to_string(i) + " is not finite");
-                SceneVertex& v = mesh.vertices[i];
-                // The bitangent in the file's space, then both through the node's transform (a
-                // mirroring transform keeps them consistent with the flipped winding).
-                glm::vec3 tw = linear * t;
-                tw = tw - v.normal * glm::dot(v.normal, tw);
-                v.tangent = glm::length(tw) > 0.0f ? glm::normalize(tw) : anyPerpendicular(v.normal);
-                // glTF: bitangent = cross(normal, tangent.xyz) * w, pointing up the image, which
-                // is the direction of increasing v here (v is flipped).
-                v.bitangent = glm::normalize(glm::cross(v.normal, v.tangent)) * sign * (mirrored ? -1.0f : 1.0f);
-            }
-        } else {
-            generateTangents(mesh);
+    static void readTangents(SceneMesh& mesh, const AccessorData& tangents, const glm::mat4& world, bool mirrored,
+                             const std::string& what) {
+        const glm::mat3 linear(world);
+        for (std::size_t i = 0; i < tangents.count; ++i) {
+            const glm::vec3 t(tangents.get(i, 0), tangents.get(i, 1), tangents.get(i, 2));
+            const float sign = tangents.get(i, 3) < 0.0f ? -1.0f : 1.0f;
+            if (!finite(t)) fail(what + ": TANGENT " + std::to_string(i) + " is not finite");
+            SceneVertex& v = mesh.vertices[i];
+            // The bitangent in the file's space, then both through the node's transform (a
+            // mirroring transform keeps them consistent with the flipped winding).
+            glm::vec3 tw = linear * t;
+            tw = tw - v.normal * glm::dot(v.normal, tw);
+            v.tangent = glm::length(tw) > 0.0f ? glm::normalize(tw) : anyPerpendicular(v.normal);
+            // glTF: bitangent = cross(normal, tangent.xyz) * w, pointing up the image, which
+            // is the direction of increasing v here (v is flipped).
+            v.bitangent = glm::normalize(glm::cross(v.normal, v.tangent)) * sign * (mirrored ? -1.0f : 1.0f);
         }
-        for (const SceneVertex& v : mesh.vertices) {
-            out_.boundsMin = haveBounds_ ? glm::min(out_.boundsMin, v.position) : v.position;
-            out_.boundsMax = haveBounds_ ? glm::max(out_.boundsMax, v.position) : v.position;
-            haveBounds_ = true;
-        }
-        out_.triangleCount += mesh.indices.size() / 3;
-        out_.vertexCount += mesh.vertices.size();
-        out_.meshes.push_back(std::move(mesh));
     }
 
     static glm::vec3 anyPerpendicular(const glm::vec3& n) {
@@ -928,25 +932,43 @@ private:
         add("default rim", {0.0f, 1.5f, -2.5f}, 0.5f);
     }
 
-    // A camera that shows the whole scene: in front of it (+Z), slightly above, looking at its
-    // centre, far enough that the bounding sphere fits the vertical field of view.
+    // A camera that shows the whole scene: in front of it (+Z), slightly above, looking at the centre
+    // of its bounds, as close as it can be with every corner of the bounding box inside the frame.
+    // The frame's aspect is not known here, so the box is fitted into a square of the vertical field
+    // of view (any frame at least as wide as it is tall shows all of it), filled to kFill.
     void addFramingCamera() {
         for (const CameraPreset& c : out_.cameras)
             if (c.name == "framing") return;
+        constexpr float kFill = 0.95f; // the box's projection reaches 95% of the way to the edge
         const glm::vec3 centre = 0.5f * (out_.boundsMin + out_.boundsMax);
         const float radius = std::max(0.5f * glm::length(out_.boundsMax - out_.boundsMin), 1e-3f);
         CameraPreset c;
         c.name = "framing";
         c.description = "Shows the whole scene from the front (+Z), slightly above";
         c.fovDegrees = 50.0f;
-        const float distance = radius / std::sin(glm::radians(0.5f * c.fovDegrees)) * 1.05f;
-        const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
+        const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f)); // from the centre to the camera
+        const glm::vec3 forward = -direction;
+        const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+        const glm::vec3 up = glm::cross(right, forward);
+        const float slope = std::tan(glm::radians(0.5f * c.fovDegrees)) * kFill;
+        // A corner at (x, y) across and z0 along the view from the centre is inside the frame from a
+        // distance d when |x| and |y| are at most slope * (z0 + d).
+        float distance = 0.0f;
+        float nearest = std::numeric_limits<float>::max();
+        for (int i = 0; i < 8; ++i) {
+            const glm::vec3 corner((i & 1) ? out_.boundsMax.x : out_.boundsMin.x, (i & 2) ? out_.boundsMax.y : out_.boundsMin.y,
+                                   (i & 4) ? out_.boundsMax.z : out_.boundsMin.z);
+            const glm::vec3 offset = corner - centre;
+            const float z0 = glm::dot(offset, forward);
+            const float across = std::max(std::abs(glm::dot(offset, right)), std::abs(glm::dot(offset, up)));
+            distance = std::max({distance, across / slope - z0, 1e-3f * radius - z0});
+            nearest = std::min(nearest, z0);
+        }
         c.position = centre + direction * distance;
-        const glm::vec2 yp = yawPitchOf(-direction);
+        const glm::vec2 yp = yawPitchOf(forward);
         c.yawDegrees = yp.x;
         c.pitchDegrees = yp.y;
-        c.nearPlane = std::max(distance - radius, distance) * 1.0e-3f;
-        c.nearPlane = std::max(c.nearPlane, (distance - radius) * 0.5f);
+        c.nearPlane = std::max((nearest + distance) * 0.5f, distance * 1.0e-3f);
         c.farPlane = (distance + radius) * 2.0f;
         out_.cameras.push_back(c);
     }
@@ -957,6 +979,10 @@ private:
     std::map<int, int> imageIndex_;
     int defaultMaterial_ = -1;
     bool haveBounds_ = false;
+    // For the reason a scene draws nothing: nodes with a mesh, primitives seen, points or lines among them.
+    std::size_t meshNodes_ = 0;
+    std::size_t primitives_ = 0;
+    std::size_t pointsOrLines_ = 0;
 };
 
 SceneDescription load(const std::uint8_t* bytes, std::size_t size, const std::string& name, const std::string& baseDir,
@@ -966,6 +992,8 @@ SceneDescription load(const std::uint8_t* bytes, std::size_t size, const std::st
     try {
         if (size > static_cast<std::size_t>(std::numeric_limits<unsigned int>::max()))
             fail("the file is larger than 4 GiB");
+        // The raw JSON's types and ranges first: tinygltf would quietly default a wrongly typed value.
+        if (const auto schemaFault = gltfSchemaFault(bytes, size)) fail(*schemaFault);
         tinygltf::TinyGLTF loader;
         ImageContext images{&limits};
         loader.SetImageLoader(&loadImage, &images);

@@ -4,6 +4,7 @@
 // row first, so they are flipped here, while PFM stores the bottom row first like we do. Every
 // failure throws t10::Error with a message that starts with the file's path.
 #include "t10/image_io.hpp"
+#include "t10/stb_guard.hpp"
 
 #include "t10/file.hpp"
 
@@ -274,6 +275,8 @@ Image8 readPng(const std::string& path) {
     const std::vector<std::uint8_t> bytes = readFile(path);
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) fail(path, "file too large");
     const int length = static_cast<int>(bytes.size());
+    // The same checks as the glTF loader's images: a JPEG named .png must not reach stb unchecked.
+    if (const auto fault = stbInputFault(bytes.data(), bytes.size())) fail(path, "cannot read PNG: " + *fault);
     int w = 0, h = 0, fileChannels = 0;
     if (!stbi_info_from_memory(bytes.data(), length, &w, &h, &fileChannels))
         fail(path, std::string("cannot read PNG: ") + stbi_failure_reason());

@@ -11,6 +11,7 @@
 #include "t10/bench.hpp"
 #include "t10/contract.hpp"
 #include "t10/error.hpp"
+#include "t10/exposure_check.hpp"
 #include "t10/gpu_timers.hpp"
 #include "t10/input_image.hpp"
 #include "t10/interactive.hpp"
@@ -218,6 +219,10 @@ int App::run() {
         frameTimeMs_ = window ? elapsed * 1000.0 : renderMs;
         checkGlErrors("in frame " + std::to_string(frame));
         times.push_back(renderMs);
+        // Once: after the last frame, or the first in a window that runs until closed.
+        if (frame == (frames == 0 ? 0 : frames - 1))
+            if (const auto black = measureBlackShare())
+                if (const auto warning = blackBackgroundWarning(*black)) std::cerr << "warning: " << *warning << "\n";
         if (settings_.run.verbose) {
             std::cout << "frame " << frame << ": " << renderMs << " ms";
             if (const auto key = readSceneKey()) std::cout << ", key Ya " << key->ya;

@@ -25,11 +25,8 @@ void addRunOptions(CLI::App& cli, RunSettings& settings) {
     group->add_flag("--verbose,-v", settings.verbose, "Print the GL vendor, renderer and version, and frame times");
     group->callback([&settings, sequence, resize] {
         refuseEmpty({resize});
-        std::stringstream list(*sequence);
-        for (std::string item; std::getline(list, item, ',');) {
-            // 0x0 stands for a minimised window; anything else must be a real size.
-            settings.resizeSequence.push_back(item == "0x0" ? std::pair<int, int>(0, 0) : parseSize(item));
-        }
+        if (!sequence->empty())
+            settings.resizeSequence = parseResizeSequence(*sequence, [](const std::string& item) { return parseSize(item); });
     });
 }
 
