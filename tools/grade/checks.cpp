@@ -98,6 +98,22 @@ void name(Check& check, const std::string& id, const std::vector<int>& steps, co
     check.diagnosis += (check.diagnosis.empty() ? "" : "; or ") + text;
 }
 
+// Rewrites the diagnosis and the blamed steps from the findings (or the unexplained text).
+void rebuildDiagnosis(Check& check) {
+    check.blame.clear();
+    if (check.mistakes.empty()) {
+        check.diagnosis = check.unexplained;
+        return;
+    }
+    check.diagnosis = check.mistakes.size() > 1 ? "one of: " : "";
+    for (std::size_t i = 0; i < check.mistakes.size(); ++i) {
+        check.diagnosis += (i ? "; or " : "") + check.mistakes[i].text;
+        for (int step : check.mistakes[i].steps)
+            if (std::find(check.blame.begin(), check.blame.end(), step) == check.blame.end()) check.blame.push_back(step);
+    }
+    std::sort(check.blame.begin(), check.blame.end());
+}
+
 // Keeps only the findings `keep` accepts (all of them if it accepts none) and rewrites the
 // diagnosis and the blamed steps from them.
 void keepFindings(Check& check, const std::function<bool(const Finding&)>& keep) {
@@ -266,17 +282,21 @@ double keyFor(double mapped, const FrameModel& model) {
     return std::exp(mapped * (std::log(yw) - std::log(e)) + std::log(e));
 }
 
-Image8 modelFrame(const FrameInputs& in, const FrameModel& model) {
+// Calls sink(x, y, colour) with each pixel's output colour under the model (before the 8-bit store).
+template <typename Sink>
+void forEachModelPixel(const FrameInputs& in, const FrameModel& model, Sink&& sink) {
     const ImageF& acc = in.accumulation;
     const double globalKey = keyFor(in.mappedKey, model);
     const int w = acc.width;
     const int h = acc.height;
-    Image8 frame(w, h, 3);
     const double scale = model.halfInvResolution ? 2.0 : 1.0;
     const ref::Settings& s = model.settings;
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            if (model.region == Region::LowerLeftQuarter && (x >= w / 2 || y >= h / 2)) continue; // cleared black
+            if (model.region == Region::LowerLeftQuarter && (x >= w / 2 || y >= h / 2)) {
+                sink(x, y, ref::Rgb{0.0, 0.0, 0.0}); // cleared black
+                continue;
+            }
             const double u = std::min((x + 0.5) / w * scale, 1.0);
             const double v = std::min((y + 0.5) / h * scale, 1.0);
             ref::Rgb c = model.halfInvResolution ? ref::sampleBilinear(acc, u, v) : texel(acc, x, y);
@@ -295,10 +315,38 @@ Image8 modelFrame(const FrameInputs& in, const FrameModel& model) {
             }
             if (model.bloomAfter)
                 for (int k = 0; k < 3; ++k) out[k] += s.bloomWeight * b[k];
-            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = ref::toUnorm8(out[k]);
+            sink(x, y, out);
         }
     }
+}
+
+Image8 modelFrame(const FrameInputs& in, const FrameModel& model) {
+    Image8 frame(in.accumulation.width, in.accumulation.height, 3);
+    forEachModelPixel(in, model, [&](int x, int y, const ref::Rgb& out) {
+        for (int k = 0; k < 3; ++k) frame.at(x, y, k) = ref::toUnorm8(out[k]);
+    });
     return frame;
+}
+
+// What the fits minimise: the mean distance, in 8-bit steps, from the model's unrounded output to
+// the frame. Unlike the rounded error it changes smoothly with a constant, so the search does not
+// stall on the plateaus of the 8-bit store.
+double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame) {
+    double sum = 0.0;
+    forEachModelPixel(in, model, [&](int x, int y, const ref::Rgb& out) {
+        for (int k = 0; k < 3; ++k) {
+            const double d = std::abs(std::clamp(out[k], 0.0, 1.0) * 255.0 - frame.at(x, y, k));
+            sum += std::isfinite(d) ? d : 255.0;
+        }
+    });
+    return sum / (3.0 * in.accumulation.width * in.accumulation.height);
+}
+
+// The second stage of a frame fit: the smooth residual finds the neighbourhood, the rounded 8-bit
+// error (what the tolerance judges) the value within 1 % of it. Constants the frame is very
+// sensitive to (the middle grey's 1.03 moves the operator's scale 30 times as much) need it.
+Fit refineFrameFit(double value, const std::function<double(double)>& roundedError) {
+    return fitParameter(roundedError, value * 0.99, value * 1.01, false, 21);
 }
 
 // The frame check's tolerance: float vs double rounding moves a channel one step, rarely.
@@ -552,48 +600,128 @@ struct CaseFrame {
 } // namespace
 
 void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Check>& checks) {
-    std::vector<Check*> frames;
-    std::vector<std::unique_ptr<CaseFrame>> cases;
-    bool ambiguous = false;
-    for (Check& c : checks) {
-        if (c.passed || c.mistakes.empty() || !endsWith(c.id, ".frame")) continue;
-        for (const CaseRun& run : runs) {
-            if (c.id != run.id + ".frame") continue;
-            frames.push_back(&c);
-            cases.push_back(std::make_unique<CaseFrame>(part, run));
-            ambiguous = ambiguous || c.mistakes.size() > 1;
+    const auto runOf = [&](const Check& c) -> const CaseRun* {
+        for (const CaseRun& run : runs)
+            if (c.id.rfind(run.id + ".", 0) == 0) return &run;
+        return nullptr;
+    };
+    const auto failedOf = [&](const std::string& kind) {
+        std::vector<Check*> list;
+        for (Check& c : checks)
+            if (!c.passed && !c.followsFrom && endsWith(c.id, "." + kind) && runOf(c) != nullptr) list.push_back(&c);
+        return list;
+    };
+    const auto has = [](const Check& c, const std::string& id) {
+        return std::any_of(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; });
+    };
+    const auto drop = [](Check& c, const std::string& id) {
+        c.mistakes.erase(std::remove_if(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; }),
+                         c.mistakes.end());
+    };
+
+    // The bloom threshold: the interval every case allows.
+    const std::vector<Check*> thresholds = failedOf("bloom-threshold");
+    if (std::any_of(thresholds.begin(), thresholds.end(), [&](const Check* c) { return has(*c, "bloom-threshold"); })) {
+        const ref::Rgb rec709{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
+        ThresholdInterval joint;
+        for (const Check* c : thresholds) {
+            const CaseRun* run = runOf(*c);
+            const ThresholdInterval i = thresholdInterval(run->dump.accumulation, run->dump.bloom(0), rec709);
+            joint.low = std::max(joint.low, i.low);
+            joint.high = std::min(joint.high, i.high);
+        }
+        const bool consistent = joint.low > 0.0 && joint.low < joint.high && joint.high < 1e300;
+        for (Check* c : thresholds) {
+            if (!has(*c, "bloom-threshold")) continue;
+            drop(*c, "bloom-threshold");
+            c->unexplained = "bloom level 0 is the first buffer that goes wrong: no one luminance threshold separates the "
+                             "pixels that bloom from those that do not in every input (step 18)";
+            rebuildDiagnosis(*c);
+            if (c->mistakes.empty()) c->blame = {18};
+            if (consistent) {
+                c->diagnosis.clear();
+                name(*c, "bloom-threshold", {18}, {std::sqrt(joint.low * joint.high) / ref::kYwhite},
+                     "between " + format(joint.low / ref::kYwhite, 3) + " and " + format(joint.high / ref::kYwhite, 3) +
+                         " x Yw over every input");
+                rebuildDiagnosis(*c);
+            }
         }
     }
-    if (!ambiguous || frames.size() < 2) return;
-    // One value for every case: fitted to the sum of the cases' mean errors, then within the
-    // tolerance in each. A constant the student wrote is the same in every render.
+
+    // The frame's constants: one value fitted to every case whose frame failed for a constant.
+    std::vector<Check*> frames;
+    std::vector<std::unique_ptr<CaseFrame>> cases;
+    std::set<std::string> named;
+    for (Check* c : failedOf("frame")) {
+        const bool discreteOnly = !c->mistakes.empty() && std::none_of(c->mistakes.begin(), c->mistakes.end(),
+                                                                          [](const Finding& f) { return f.value.size() == 1; });
+        if (discreteOnly) continue;
+        frames.push_back(c);
+        cases.push_back(std::make_unique<CaseFrame>(part, *runOf(*c)));
+        for (const Finding& f : c->mistakes)
+            if (f.value.size() == 1 && f.id != "key-level") named.insert(f.id);
+    }
     const std::pair<const char*, double ref::Settings::*> parameters[] = {{"white-point", &ref::Settings::whitePoint},
                                                                           {"middle-grey", &ref::Settings::middleGrey},
                                                                           {"epsilon", &ref::Settings::epsilon},
                                                                           {"bloom-weight", &ref::Settings::bloomWeight}};
-    std::set<std::string> rejected;
     for (const auto& [id, field] : parameters) {
+        if (named.count(id) == 0 || frames.size() < 2) continue;
         std::vector<double> values;
+        std::vector<int> steps;
         for (const Check* c : frames)
             for (const Finding& f : c->mistakes)
-                if (f.id == id && f.value.size() == 1) values.push_back(f.value[0]);
-        if (values.empty()) continue;
-        const auto model = [&, field = field](double v) {
+                if (f.id == id) {
+                    values.push_back(f.value[0]);
+                    steps = f.steps;
+                }
+        const auto model = [field = field](double v) {
             FrameModel m;
             m.settings.*field = v;
             return m;
         };
-        const auto total = [&](double v) {
+        const Fit rough = fitParameter(
+            [&](double v) {
+                double sum = 0.0;
+                for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame);
+                return sum;
+            },
+            *std::min_element(values.begin(), values.end()) * 0.5, *std::max_element(values.begin(), values.end()) * 2.0,
+            true, 12);
+        const Fit fit = refineFrameFit(rough.value, [&](double v) {
             double sum = 0.0;
-            for (const auto& c : cases) sum += t10::test::byteError(modelFrame(*c->inputs, model(v)), c->run.dump.frame).mean;
+            for (const auto& c : cases) {
+                const auto e = t10::test::byteError(modelFrame(*c->inputs, model(v)), c->run.dump.frame);
+                sum += e.mean + e.fractionOverOne;
+            }
             return sum;
-        };
-        const auto [low, high] = std::minmax_element(values.begin(), values.end());
-        const Fit fit = fitParameter(total, *low * 0.8, *high * 1.25, true, 8);
+        });
+        bool everyCase = true;
         for (const auto& c : cases)
-            if (!frameWithin(t10::test::byteError(modelFrame(*c->inputs, model(fit.value)), c->run.dump.frame))) rejected.insert(id);
+            everyCase = everyCase && frameWithin(t10::test::byteError(modelFrame(*c->inputs, model(fit.value)), c->run.dump.frame));
+        for (Check* c : frames) {
+            drop(*c, id);
+            rebuildDiagnosis(*c);
+            if (everyCase) {
+                c->diagnosis.clear();
+                name(*c, id, steps, {fit.value});
+                rebuildDiagnosis(*c);
+            }
+        }
     }
-    for (Check* c : frames) keepFindings(*c, [&](const Finding& f) { return rejected.count(f.id) == 0; });
+
+    // Elsewhere: of several mistakes that explain one case, those every other case's check names too.
+    for (const char* kind : {"log-luminance", "blur-passes", "blur", "frame"}) {
+        std::vector<Check*> list;
+        for (Check* c : failedOf(kind))
+            if (!c->mistakes.empty()) list.push_back(c);
+        for (Check* c : list) {
+            if (c->mistakes.size() < 2) continue;
+            keepFindings(*c, [&](const Finding& f) {
+                return std::all_of(list.begin(), list.end(), [&](const Check* o) { return has(*o, f.id); });
+            });
+        }
+    }
 }
 
 std::vector<int> partSteps(int part) { return range(1, part == 1 ? 16 : part == 2 ? 25 : 36); }
@@ -1044,11 +1172,16 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
                         fm.settings.*(p.field) = v;
                         return fm;
                     };
-                    const Fit fit = fitParameter([&](double v) { return frameError(model(v)).mean; }, p.low, p.high, true, 16);
+                    const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), dump.frame); },
+                                                   p.low, p.high, true, 16);
+                    const Fit fit = refineFrameFit(rough.value, [&](double v) {
+                        const auto e = frameError(model(v));
+                        return e.mean + e.fractionOverOne;
+                    });
                     if (frameWithin(frameError(model(fit.value)))) name(check, p.id, p.steps, {fit.value});
                 }
-                if (check.mistakes.empty()) check.diagnosis = describeFrame(expected, dump.frame);
-                else if (check.mistakes.size() > 1) check.diagnosis = "one of: " + check.diagnosis;
+                check.unexplained = describeFrame(expected, dump.frame);
+                rebuildDiagnosis(check);
             }
         }
         checks.push_back(check);

@@ -27,6 +27,8 @@ struct Check {
     // only because an earlier check's buffer is wrong (followsFrom) costs nothing of its own.
     std::vector<int> blame;
     bool followsFrom = false;
+    // What the diagnosis says when no mistake explains the failure (kept for crossCheckCases).
+    std::string unexplained;
     // Image checks: files relative to the submission's report folder (empty when not an image check).
     std::string studentImage;
     std::string referenceImage;
@@ -49,9 +51,11 @@ t10::test::Dump loadDumpDir(const std::string& dir);
 // `imageDir` (a folder inside the report folder) and are named relative to `reportDir`.
 std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string& reportDir, const std::string& imageDir);
 
-// Keeps, of the mistakes that explain one case's frame equally well, those whose fitted value also
-// explains the frame of every other case that failed (a value that only fits one case's key is not
-// the student's constant), and rewrites those checks' diagnoses.
+// Makes the cases agree: a constant the student wrote is the same in every render, so the frame's
+// constants are fitted once to every case whose frame failed (kept only when one value explains
+// them all), the bloom threshold is the one luminance interval every case allows, and of several
+// mistakes that explain one case only those the other cases' same check also names are kept.
+// Rewrites the diagnoses and blamed steps of the checks it changes.
 void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Check>& checks);
 
 // The tutorial steps of a part (1-16, 1-25, 1-36).
