@@ -22,6 +22,9 @@ struct Finding {
     std::vector<double> tutorial;
     std::vector<int> steps;
     std::string text; // the sentence of the diagnosis that names it
+    // The tolerance also holds 7 % either side of the value: the case does not pin it down, and
+    // crossCheckCases takes the value a case that does pin it measured.
+    bool loose = false;
 };
 
 // Loads the table once (T10_GRADE_MISTAKES); throws t10::Error naming the file and line on a fault.

@@ -76,12 +76,9 @@ std::string stepRange(const std::vector<int>& steps) {
 
 // Names a catalogue mistake on a check: the finding, the steps it costs and the sentence a student
 // reads ("your blur sigma measures 1.0; the tutorial's is 2.5 (step 27)").
-void name(Check& check, const std::string& id, const std::vector<int>& steps, const std::vector<double>& value = {},
-          const std::string& note = "") {
+std::string findingText(const std::string& id, const std::vector<int>& steps, const std::vector<double>& value,
+                        const std::string& note) {
     const Mistake& m = mistake(id);
-    for (int step : steps)
-        if (std::find(check.blame.begin(), check.blame.end(), step) == check.blame.end()) check.blame.push_back(step);
-    std::sort(check.blame.begin(), check.blame.end());
     std::string text = "[" + id + "] ";
     if (!m.parameter.empty() && !value.empty()) {
         std::string words = m.parameter;
@@ -93,8 +90,17 @@ void name(Check& check, const std::string& id, const std::vector<int>& steps, co
         text += m.text;
     }
     if (!note.empty()) text += " (" + note + ")";
-    text += " (" + stepRange(steps) + ")";
-    check.mistakes.push_back(Finding{id, m.parameter, value, m.tutorial, steps, text});
+    return text + " (" + stepRange(steps) + ")";
+}
+
+void name(Check& check, const std::string& id, const std::vector<int>& steps, const std::vector<double>& value = {},
+          const std::string& note = "", bool loose = false) {
+    const Mistake& m = mistake(id);
+    for (int step : steps)
+        if (std::find(check.blame.begin(), check.blame.end(), step) == check.blame.end()) check.blame.push_back(step);
+    std::sort(check.blame.begin(), check.blame.end());
+    const std::string text = findingText(id, steps, value, note);
+    check.mistakes.push_back(Finding{id, m.parameter, value, m.tutorial, steps, text, loose});
     check.diagnosis += (check.diagnosis.empty() ? "" : "; or ") + text;
 }
 
@@ -507,6 +513,7 @@ struct BlurFinding {
     std::vector<double> value;
     ref::Settings settings;
     bool otherAxis = false;
+    bool loose = false;
 };
 
 // Fits sigma, the inner and the outer tap to one pass (one at a time), and tries the other axis;
@@ -533,7 +540,14 @@ std::vector<BlurFinding> fitPass(const ImageF& source, const ImageF& gpu, int w,
             p.low, p.high, true, 30);
         ref::Settings s;
         s.*(p.field) = fit.value;
-        if (blurWithin(error(s, horizontal))) found.push_back({p.id, {fit.value}, s});
+        if (!blurWithin(error(s, horizontal))) continue;
+        bool loose = true;
+        for (double factor : {0.93, 1.07}) {
+            ref::Settings off;
+            off.*(p.field) = fit.value * factor;
+            loose = loose && blurWithin(error(off, horizontal));
+        }
+        found.push_back({p.id, {fit.value}, s, false, loose});
     }
     if (blurWithin(error(ref::Settings{}, !horizontal))) found.push_back({"swapped-subroutines", {}, {}, true});
     return found;
@@ -707,6 +721,29 @@ void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Che
                 name(*c, id, steps, {fit.value});
                 rebuildDiagnosis(*c);
             }
+        }
+    }
+
+    // The blur's constants: a case that does not pin a constant down takes the value of the cases
+    // that do (their median).
+    for (const char* kind : {"blur-passes", "blur"}) {
+        const std::vector<Check*> list = failedOf(kind);
+        for (const char* id : {"blur-sigma", "blur-tap-inner", "blur-tap-outer"}) {
+            std::vector<double> pinned;
+            for (const Check* c : list)
+                for (const Finding& f : c->mistakes)
+                    if (f.id == id && !f.loose && f.value.size() == 1) pinned.push_back(f.value[0]);
+            if (pinned.empty()) continue;
+            std::sort(pinned.begin(), pinned.end());
+            const double median = pinned[pinned.size() / 2];
+            for (Check* c : list)
+                for (Finding& f : c->mistakes)
+                    if (f.id == id && f.loose) {
+                        f.value = {median};
+                        f.loose = false;
+                        f.text = findingText(id, f.steps, f.value, "measured in the other inputs; this one does not pin it down");
+                        rebuildDiagnosis(*c);
+                    }
         }
     }
 
@@ -985,7 +1022,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             for (const BlurFinding& f : passFindings) {
                 const std::vector<int> steps = f.id == "swapped-subroutines" ? std::vector<int>{horizontal ? 32 : 33}
                                                                              : std::vector<int>{27};
-                name(passCheck, f.id, steps, f.value, sigmaNote(f));
+                name(passCheck, f.id, steps, f.value, sigmaNote(f), f.loose);
             }
             if (passFindings.empty()) {
                 std::vector<double> e, g;
@@ -1036,7 +1073,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             for (const BlurFinding& f : passFindings) {
                 if (f.otherAxis) continue;
                 if (blurWithin(chain(f.settings, pairs))) {
-                    name(check, f.id, {27}, f.value, sigmaNote(f));
+                    name(check, f.id, {27}, f.value, sigmaNote(f), f.loose);
                     named = true;
                 }
             }
@@ -1049,14 +1086,14 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
             const bool swapped = std::any_of(passFindings.begin(), passFindings.end(), [](const BlurFinding& f) { return f.otherAxis; });
             if (!named && swapped) {
                 check.followsFrom = true;
-                check.diagnosis = "follows from " + passCheck.id + ": " + passCheck.diagnosis;
+                check.diagnosis = "follows from " + passCheck.id + " (see its diagnosis)";
             } else if (!named && pairs != ref::kBlurPasses && blurWithin(chain(ref::Settings{}, pairs))) {
                 name(check, "blur-passes", {34}, {double(pairs)});
             } else if (!named && blurWithin(peakError(bloom1, ref::boxDownsample(bloom0)))) {
                 name(check, "blur-missing", range(27, 34));
             } else if (!named && !passCheck.passed) {
                 check.followsFrom = true;
-                check.diagnosis = "follows from " + passCheck.id + ": " + passCheck.diagnosis;
+                check.diagnosis = "follows from " + passCheck.id + " (see its diagnosis)";
             } else if (!named) {
                 check.diagnosis = "every captured pass is right but level 1 is not their result: check which texture the "
                                   "last pass draws into (steps 32-34)";

@@ -4,7 +4,7 @@
 //   extremes.exr  64x64: 16 rows exactly black (a tone map without a guard divides 0 by 0
 //            there), below them grey steps from 0.001 to 50 in luminance, so that pixels sit below,
 //            at and far above the white point Yw = 0.22 and the bloom threshold 2.95 x Yw
-//   ramp.exr  64x64: 16 rows exactly black, below them every pixel a different luminance from 0.001
+//   ramp.exr  64x64: 16 rows exactly black, above them every pixel a different luminance from 0.001
 //            to 50 (log-spaced, 0.35% apart), in four tints: t10-grade fits the white point, the
 //            bloom threshold and the luminance weights to it, so no value of them falls between two
 //            pixels by more than a fraction of a percent
@@ -83,8 +83,10 @@ t10::ImageF ramp() {
     t10::ImageF image(kRampSize, kRampSize, 4);
     for (int y = 0; y < kRampSize; ++y) {
         for (int x = 0; x < kRampSize; ++x) {
-            const bool black = y >= kRampSize - kBlackRows;
-            const int index = y * kRampSize + x;
+            // Black rows first, then the ramp from its dimmest pixels, so that the bloom of the
+            // brightest rows does not reach the black ones (the 0/0 check needs them exactly black).
+            const bool black = y < kBlackRows;
+            const int index = (y - kBlackRows) * kRampSize + x;
             const float lum = std::pow(10.0f, -3.0f + 4.7f * float(index) / float(kLit - 1));
             const float* tint = kTints[x % 4];
             const float tintLum = 0.2126f * tint[0] + 0.7152f * tint[1] + 0.0722f * tint[2];
