@@ -1,7 +1,9 @@
 # Tests of the graders (included from tools/grade/CMakeLists.txt). The submissions are written at test
-# time from the current reference stages by tests/make_submissions.py: each reference and a
-# shaders-only copy of it must score 100, each known mistake must fail the check of its step with its
-# diagnosis, and broken submissions must get their status within the time limit. Renders are small
+# time from the current reference stages by tests/make_submissions.py: each reference, a
+# shaders-only copy of it and an equivalent rewrite must score 100, each known mistake must fail the
+# check of its step with its diagnosis (and, with a value, the value measured within 10 %), Part 1
+# with steps 6-10 missing must score below Part 1 with one wrong constant, and broken submissions
+# must get their status within the time limit. Renders are small
 # (128x128, 160x90, 64x64) and the reference renders and built submissions are cached, so the part 3
 # batch takes a few seconds of CPU per submission. Part 3's per-pass checks (blur-passes,
 # blur-pass-count) are shown to fail on the tap, sigma, full_res_offsets, swapped_subroutines and
@@ -64,6 +66,9 @@ add_test(NAME "grade: fitted parameters named with their measured values"
          COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/fitted ${GRADE_FITTED})
 set_tests_properties("grade: fitted parameters named with their measured values" PROPERTIES
                      FIXTURES_REQUIRED grade_fitted SKIP_RETURN_CODE 77)
+# The instructors' page lists the catalogue (mistakes.tsv) as it is.
+add_test(NAME "grade: the instructors' page lists mistakes.tsv"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/check_reports.py docs ${PROJECT_SOURCE_DIR}/site/instructors.md)
 # --- end of the fitted parameters block.
 
 # The batch graded in parallel gives the same gradebook rows as grading one at a time (a shader

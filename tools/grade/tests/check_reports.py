@@ -3,6 +3,7 @@
 
   check_reports.py reports REPORT_DIR NAME...    each named submission's report.json is as expected
   check_reports.py same BATCH_CSV SINGLE_CSV...   the rows of the single gradebooks equal the batch's
+  check_reports.py docs INSTRUCTORS_MD            the page's table of known mistakes lists mistakes.tsv's ids
 
 For a known mistake the check that guards its step must fail, name the mistake's catalogue id in
 its diagnosis and cover the step; the score must drop. For the fitted batch (make_submissions.FITTED)
@@ -230,17 +231,38 @@ def compare_part1(report_dir, errors):
               f"{scores['p1_one_constant']}")
 
 
+def docs_ids(path):
+    """The ids in the first column of the table under "## Known mistakes"."""
+    ids, inside = [], False
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                inside = line.startswith("## Known mistakes")
+            elif inside and line.startswith("| `"):
+                ids.append(line.split("`")[1])
+    return ids
+
+
 def rows(path):
     with open(path, newline="", encoding="utf-8") as f:
         return {row["submission"]: row for row in csv.DictReader(f)}
 
 
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same", "docs"):
         print(__doc__, file=sys.stderr)
         return 2
     errors = []
-    if sys.argv[1] == "reports":
+    if sys.argv[1] == "docs":
+        listed = docs_ids(sys.argv[2])
+        if listed != list(CATALOGUE):
+            missing = [i for i in CATALOGUE if i not in listed]
+            extra = [i for i in listed if i not in CATALOGUE]
+            errors.append(f"{sys.argv[2]}: the table of known mistakes differs from mistakes.tsv (order included): "
+                          f"missing {missing}, not in the catalogue {extra}")
+        else:
+            print(f"{sys.argv[2]} lists the {len(listed)} mistakes of mistakes.tsv in its order")
+    elif sys.argv[1] == "reports":
         for name in sys.argv[3:]:
             check_report(sys.argv[2], name, errors)
         if "p1_steps_missing" in sys.argv[3:] and "p1_one_constant" in sys.argv[3:]:

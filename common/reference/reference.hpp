@@ -1,7 +1,8 @@
 // CPU reference of Tutorial 10's post-processing chain in double precision: luminance, the range
 // mapped log luminance and scene key, the tone map operator, the bloom threshold, the 2x2
-// downsample and the five-tap importance-sampled Gaussian passes. The numeric tests run it on
-// buffers read back from the GPU and compare.
+// downsample and the five-tap importance-sampled Gaussian passes, every constant a field of
+// Settings (defaults from contract.hpp). GL-free (library t10_reference_math): the numeric tests run
+// it on buffers read back from the GPU, and t10-grade's mistake models are other Settings of it.
 #pragma once
 #include "t10/contract.hpp"
 #include "t10/image.hpp"
