@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -134,7 +135,12 @@ const Check* blamedBy(const Report& report, int step) {
     return first;
 }
 
-std::string stepAnchor(int step) { return "tutorial10.html#step-" + std::to_string(step); }
+// The tutorial page the step links point at: $T10_GRADE_TUTORIAL_URL (the course site's page, for
+// reports read elsewhere), else tutorial10.html beside the report as the site's own pages link it.
+std::string stepAnchor(int step) {
+    const char* url = std::getenv("T10_GRADE_TUTORIAL_URL");
+    return std::string(url != nullptr && *url != '\0' ? url : "tutorial10.html") + "#step-" + std::to_string(step);
+}
 
 } // namespace
 
@@ -278,7 +284,8 @@ void writeReportHtml(const Report& report, const std::string& path) {
             out << "</div>\n";
         }
     }
-    out << "<p>Step links point at the tutorial page (tutorial10.html on the course site).</p>\n</body></html>\n";
+    out << "<p>Step links point at " << html(stepAnchor(1).substr(0, stepAnchor(1).find('#')))
+        << " (T10_GRADE_TUTORIAL_URL sets the course site's page).</p>\n</body></html>\n";
     writeAtomically(path, out.str());
 }
 
