@@ -445,6 +445,7 @@ Report Grader::grade(const std::string& submission) const {
     report.submission = submissionName(submission);
     report.path = submission;
     report.part = config_.part;
+    report.rubric = loadRubric(config_.part); // a faulty rubric stops before any build or render
     const fs::path out = fs::absolute(config_.reportDir) / report.submission;
     fs::remove_all(out);
     fs::create_directories(out);
@@ -512,7 +513,6 @@ Report Grader::grade(const std::string& submission) const {
     }
 
     report.status = "graded";
-    report.rubric = loadRubric(config_.part);
     const std::vector<CaseSpec> specs = cases(config_.part);
     for (std::size_t i = 0; i < runs.size(); ++i) {
         std::vector<Check> checks;

@@ -71,6 +71,20 @@ set_tests_properties("grade: fitted parameters named with their measured values"
 # The instructors' page lists the catalogue (mistakes.tsv) as it is.
 add_test(NAME "grade: the instructors' page lists mistakes.tsv"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/check_reports.py docs ${PROJECT_SOURCE_DIR}/site/instructors.md)
+# A faulty or missing rubric (T10_GRADE_RUBRIC): exit 1 with the file, the line and the fault.
+file(WRITE ${GRADE_OUT}/bad-rubric.txt "default 1\n7 lots\n")
+foreach(case "bad;${GRADE_OUT}/bad-rubric.txt;bad-rubric.txt:2: expected STEP POINTS"
+             "missing;${GRADE_OUT}/no-such-rubric.txt;no-such-rubric.txt: cannot open the rubric: No such file or directory")
+    list(GET case 0 label)
+    list(GET case 1 rubric)
+    list(GET case 2 regex)
+    add_test(NAME "grade: ${label} rubric is refused"
+             COMMAND ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${EXPECT} 1 "${regex}" --
+                     ${PROJECT_BINARY_DIR}/bin/t10-grade --part 1 --report ${GRADE_REPORTS}/rubric-${label}
+                     ${GRADE_SUBMISSIONS}/part1/shaders1)
+    set_tests_properties("grade: ${label} rubric is refused" PROPERTIES ENVIRONMENT "T10_GRADE_RUBRIC=${rubric}"
+                         FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+endforeach()
 # --- end of the fitted parameters block.
 
 # The batch graded in parallel gives the same gradebook rows as grading one at a time (a shader
