@@ -7,7 +7,7 @@ Each layer folder holds include/t10/*.hpp and src/*.cpp. A file may include (`#i
 only headers of its own layer or of the layers it sits on:
 
     base      (GL-free: contract, errors, files, median, sizes, JSON, CLI11 checks)
-    reference base                               (the GL-free CPU reference, when it moves here)
+    reference base                               (the GL-free CPU reference, common/reference/)
     platform  reference, base
     content   platform, reference, base
     frame     content, platform, reference, base

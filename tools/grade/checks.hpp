@@ -2,9 +2,12 @@
 // the part writes (luminance levels and key, bloom levels, each blur pass as pass_capture.cpp
 // recorded it, the blurred bloom) against the CPU
 // reference of tests/numeric, the final frame against the CPU tone map of the buffers the GPU
-// produced, and the frame against the reference stage with FLIP. A failed check asks the mistake
-// catalogue (mistakes.hpp) which known mistake explains the measurement.
+// produced, and the frame against the reference stage with FLIP. A failed check fits the tutorial's
+// constants to the buffers (fits.hpp) and names a mistake of the catalogue (catalogue.hpp) only when
+// its fitted model explains them within the check's tolerance; otherwise it says how the buffer is
+// wrong.
 #pragma once
+#include "catalogue.hpp"
 #include "dumps.hpp"
 
 #include <string>
@@ -19,6 +22,13 @@ struct Check {
     std::string measured;    // the figures, in units a reader knows (8-bit steps, R16 steps, % of peak)
     std::string tolerance;   // the bound and why
     std::string diagnosis;   // the known mistake that explains a failure, or what to look at
+    std::vector<Finding> mistakes; // the catalogue's mistakes whose fitted model explains the failure
+    // The steps a failure costs: the steps of the mistakes found, else `steps`. A check that fails
+    // only because an earlier check's buffer is wrong (followsFrom) costs nothing of its own.
+    std::vector<int> blame;
+    bool followsFrom = false;
+    // What the diagnosis says when no mistake explains the failure (kept for crossCheckCases).
+    std::string unexplained;
     // Image checks: files relative to the submission's report folder (empty when not an image check).
     std::string studentImage;
     std::string referenceImage;
@@ -41,7 +51,18 @@ t10::test::Dump loadDumpDir(const std::string& dir);
 // `imageDir` (a folder inside the report folder) and are named relative to `reportDir`.
 std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string& reportDir, const std::string& imageDir);
 
+// Makes the cases agree: a constant the student wrote is the same in every render, so the frame's
+// constants are fitted once to every case whose frame failed (kept only when one value explains
+// them all), the bloom threshold is the one luminance interval every case allows, and of several
+// mistakes that explain one case only those the other cases' same check also names are kept.
+// Rewrites the diagnoses and blamed steps of the checks it changes.
+void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Check>& checks);
+
 // The tutorial steps of a part (1-16, 1-25, 1-36).
 std::vector<int> partSteps(int part);
+// The steps whose result is the final frame (6-10, 19-20 from Part 2, 35 in Part 3).
+std::vector<int> frameSteps(int part);
+// The steps a failed check costs (see Check::blame); empty for a passed check.
+std::vector<int> failedSteps(const Check& check);
 
 } // namespace t10::grade

@@ -69,7 +69,8 @@ std::vector<CaseSpec> cases(int part) {
     std::vector<CaseSpec> list{
         {"pot", "128x128 (power of two), camera default", true, {"--size", "128x128", "--camera", "default"}},
         {"npot", "160x90 (not a power of two), camera lights", true, {"--size", "160x90", "--camera", "lights"}},
-        {"extremes", "64x64 input: black pixels and greys from 0.001 to 50", false, {"--input", "{inputs}/extremes.exr"}},
+        {"extremes", "64x64 input: black pixels, and every pixel a different luminance from 0.001 to 50", false,
+         {"--input", "{inputs}/ramp.exr"}},
     };
     if (part >= 2) list.push_back({"hot", "128x128 input: one hot 2x2 block on grey", false, {"--input", "{inputs}/hot.exr"}});
     return list;
@@ -385,7 +386,7 @@ private:
 
 void Grader::prepareInputs() {
     inputsDir_ = (fs::absolute(config_.cacheDir) / "inputs").string();
-    if (fs::exists(inputsDir_ + "/extremes.exr") && fs::exists(inputsDir_ + "/hot.exr")) return;
+    if (fs::exists(inputsDir_ + "/ramp.exr") && fs::exists(inputsDir_ + "/hot.exr")) return;
     const std::string temporary = inputsDir_ + uniqueSuffix();
     fs::create_directories(temporary);
     const RunResult result = runLimited({std::string(T10_GRADE_BIN_DIR) + "/make_test_images", temporary},
@@ -503,7 +504,7 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     check.referenceImage = "images/" + check.id + ".reference.png";
     check.heatMap = "images/" + base + ".png";
     for (const Check& c : caseChecks) {
-        if (!c.passed && !c.diagnosis.empty()) {
+        if (!c.passed && !c.diagnosis.empty() && !c.followsFrom) {
             check.diagnosis += (check.diagnosis.empty() ? "" : "; ") + c.id + ": " + c.diagnosis;
         }
     }
@@ -520,6 +521,7 @@ Report Grader::grade(const std::string& submission, const std::string& name) con
     report.submission = name;
     report.path = submission;
     report.part = config_.part;
+    report.rubric = loadRubric(config_.part); // a faulty rubric stops before any build or render
     const fs::path out = fs::absolute(config_.reportDir) / report.submission;
     fs::remove_all(out);
     fs::create_directories(out);
@@ -602,9 +604,24 @@ Report Grader::grade(const std::string& submission, const std::string& name) con
             check.diagnosis = "the stage does not write the buffers of this part where the tutorial puts them";
             checks.push_back(check);
         }
-        if (specs[i].camera) checks.push_back(flipCheck(specs[i], (out / "runs" / specs[i].id / "frame.png").string(), out.string(), checks));
+        if (specs[i].camera) {
+            Check flip = flipCheck(specs[i], (out / "runs" / specs[i].id / "frame.png").string(), out.string(), checks);
+            // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
+            // every buffer is right and the frame is not: it costs the steps that make the frame.
+            const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });
+            if (!flip.passed && buffersFailed) {
+                flip.followsFrom = true;
+                std::string ids;
+                for (const Check& c : checks)
+                    if (!c.passed) ids += (ids.empty() ? "" : ", ") + c.id;
+                flip.diagnosis = "follows from " + ids + " (the frame shows what they diagnose)";
+            }
+            else if (!flip.passed) flip.blame = frameSteps(config_.part);
+            checks.push_back(flip);
+        }
         report.checks.insert(report.checks.end(), checks.begin(), checks.end());
     }
+    crossCheckCases(config_.part, runs, report.checks);
     return finish(report);
 }
 

@@ -4,10 +4,14 @@
 
 #include "t10/error.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace t10::grade {
@@ -57,6 +61,19 @@ std::string csvField(const std::string& text) {
     return out + "\"";
 }
 
+std::string jsonNumber(const std::vector<double>& values) {
+    std::ostringstream out;
+    out.precision(6);
+    if (values.size() == 1) {
+        out << values[0];
+        return out.str();
+    }
+    out << "[";
+    for (std::size_t i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values[i];
+    out << "]";
+    return out.str();
+}
+
 std::string stepList(const std::vector<int>& steps) {
     std::string out;
     for (std::size_t i = 0; i < steps.size(); ++i) out += (i ? ", " : "") + std::to_string(steps[i]);
@@ -84,22 +101,110 @@ int Report::passedCount() const {
     return passed;
 }
 
+std::vector<int> Report::failedSteps() const {
+    std::set<int> steps;
+    for (const Check& check : checks)
+        for (int step : grade::failedSteps(check)) steps.insert(step);
+    return {steps.begin(), steps.end()};
+}
+
 int Report::score() const {
     if (status != "graded" || checks.empty()) return 0;
-    return passedCount() * 100 / static_cast<int>(checks.size());
+    double total = 0.0;
+    for (const auto& [step, points] : rubric) total += points;
+    double lost = 0.0;
+    for (int step : failedSteps()) {
+        const auto at = rubric.find(step);
+        lost += at == rubric.end() ? 0.0 : at->second;
+    }
+    const int score = total > 0.0 ? static_cast<int>(std::floor(100.0 * (total - lost) / total + 1e-9)) : 0;
+    return passedCount() == static_cast<int>(checks.size()) ? score : std::min(score, 99);
 }
+
+namespace {
+
+// The first failed check that blames `step`, preferring one that names a mistake.
+const Check* blamedBy(const Report& report, int step) {
+    const Check* first = nullptr;
+    for (const Check& check : report.checks) {
+        const std::vector<int> steps = failedSteps(check);
+        if (std::find(steps.begin(), steps.end(), step) == steps.end()) continue;
+        if (!check.mistakes.empty()) return &check;
+        if (first == nullptr) first = &check;
+    }
+    return first;
+}
+
+// The tutorial page the step links point at: $T10_GRADE_TUTORIAL_URL (the course site's page, for
+// reports read elsewhere), else tutorial10.html beside the report as the site's own pages link it.
+std::string stepAnchor(int step) {
+    const char* url = std::getenv("T10_GRADE_TUTORIAL_URL");
+    return std::string(url != nullptr && *url != '\0' ? url : "tutorial10.html") + "#step-" + std::to_string(step);
+}
+
+} // namespace
+
+std::string Report::fixFirst() const {
+    const std::vector<int> steps = failedSteps();
+    if (steps.empty()) return "";
+    const Check* check = blamedBy(*this, steps.front());
+    return "fix first: step " + std::to_string(steps.front()) + " - " + (check != nullptr ? check->id + ": " + check->diagnosis : "");
+}
+
+namespace {
+
+std::string summary(const Report& report) {
+    if (report.status != "graded") return report.status + ": score 0";
+    const std::vector<int> failed = report.failedSteps();
+    if (failed.empty()) return "score " + std::to_string(report.score()) + ": every check passed";
+    std::string steps;
+    for (int step : failed) steps += (steps.empty() ? "" : ", ") + std::to_string(step);
+    return "score " + std::to_string(report.score()) + ": steps " + steps + " lose points; " + report.fixFirst();
+}
+
+} // namespace
 
 void writeReportJson(const Report& report, const std::string& path) {
     std::ostringstream out;
     out << "{\n  \"submission\": " << jsonString(report.submission) << ",\n  \"path\": " << jsonString(report.path)
         << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonString(report.status)
         << ",\n  \"score\": " << report.score() << ",\n  \"message\": " << jsonString(report.message)
-        << ",\n  \"seconds\": " << report.seconds << ",\n  \"checks\": [";
+        << ",\n  \"seconds\": " << report.seconds << ",\n  \"rubric\": " << jsonString(rubricPath())
+        << ",\n  \"fix_first\": " << jsonString(report.fixFirst()) << ",\n  \"summary\": " << jsonString(summary(report))
+        << ",\n  \"failed_steps\": [" << stepList(report.failedSteps()) << "],\n  \"steps\": [";
+    if (report.status == "graded") {
+        const std::vector<int> failed = report.failedSteps();
+        bool first = true;
+        for (const auto& [step, points] : report.rubric) {
+            const bool lost = std::find(failed.begin(), failed.end(), step) != failed.end();
+            std::string by;
+            for (const Check& c : report.checks) {
+                const std::vector<int> steps = failedSteps(c);
+                if (std::find(steps.begin(), steps.end(), step) != steps.end()) by += (by.empty() ? "" : ", ") + jsonString(c.id);
+            }
+            out << (first ? "" : ",") << "\n    {\"step\": " << step << ", \"points\": " << points << ", \"passed\": "
+                << (lost ? "false" : "true") << ", \"failed_checks\": [" << by << "], \"link\": "
+                << jsonString(stepAnchor(step)) << "}";
+            first = false;
+        }
+    }
+    out << "\n  ],\n  \"checks\": [";
     for (std::size_t i = 0; i < report.checks.size(); ++i) {
         const Check& c = report.checks[i];
         out << (i ? "," : "") << "\n    {\"id\": " << jsonString(c.id) << ", \"steps\": [" << stepList(c.steps)
             << "], \"passed\": " << (c.passed ? "true" : "false") << ", \"measured\": " << jsonString(c.measured)
-            << ", \"tolerance\": " << jsonString(c.tolerance) << ", \"diagnosis\": " << jsonString(c.diagnosis);
+            << ", \"tolerance\": " << jsonString(c.tolerance) << ", \"diagnosis\": " << jsonString(c.diagnosis)
+            << ", \"blames\": [" << stepList(failedSteps(c)) << "], \"mistakes\": [";
+        for (std::size_t m = 0; m < c.mistakes.size(); ++m) {
+            const Finding& f = c.mistakes[m];
+            out << (m ? ", " : "") << "{\"id\": " << jsonString(f.id) << ", \"steps\": [" << stepList(f.steps) << "]";
+            if (!f.parameter.empty() && !f.value.empty()) {
+                out << ", \"estimate\": {\"parameter\": " << jsonString(f.parameter) << ", \"value\": " << jsonNumber(f.value)
+                    << ", \"tutorial\": " << jsonNumber(f.tutorial) << "}";
+            }
+            out << "}";
+        }
+        out << "]";
         if (!c.heatMap.empty()) {
             out << ", \"images\": {\"student\": " << jsonString(c.studentImage) << ", \"reference\": "
                 << jsonString(c.referenceImage) << ", \"heat_map\": " << jsonString(c.heatMap) << "}";
@@ -112,47 +217,93 @@ void writeReportJson(const Report& report, const std::string& path) {
 
 void writeReportHtml(const Report& report, const std::string& path) {
     std::ostringstream out;
-    out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html(report.submission)
-        << " - Tutorial 10 Part " << report.part << "</title>\n<style>body{font-family:sans-serif;margin:2em;"
-        << "max-width:70em}table{border-collapse:collapse}td,th{border:1px solid #999;padding:.3em .5em;"
-        << "vertical-align:top}.fail{background:#fdd}.pass{background:#dfd}img{image-rendering:pixelated;"
-        << "width:256px;margin-right:.5em}pre{white-space:pre-wrap;background:#eee;padding:.5em}</style></head><body>\n"
-        << "<h1>" << html(report.submission) << ": Tutorial 10 Part " << report.part << "</h1>\n<p>Status: <b>"
-        << html(report.status) << "</b>. Score: <b>" << report.score() << "</b> / 100 (" << report.passedCount()
-        << " of " << report.checks.size() << " checks passed; the score is the share of checks passed, rounded "
-        << "down).</p>\n";
+    // One column that reflows down to 400 px; print keeps the colours' meaning in words and borders.
+    out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" << html(report.submission)
+        << " - Tutorial 10 Part " << report.part << "</title>\n<style>"
+        << "body{font-family:system-ui,sans-serif;line-height:1.4;margin:0 auto;padding:1em;max-width:60em;color:#111}"
+        << "h1{font-size:1.4em}h2{font-size:1.15em;margin-top:1.5em}"
+        << ".summary{border:2px solid #333;padding:.6em .8em;border-radius:4px;background:#f6f6f6}"
+        << ".fix{font-weight:bold}.check{border:1px solid #bbb;border-left:6px solid #2a7;padding:.5em .8em;margin:.6em 0;"
+        << "border-radius:4px;break-inside:avoid}.check.fail{border-left-color:#c22}"
+        << ".label{font-weight:bold}.fail .label{color:#a00}.pass .label{color:#175}"
+        << "dl{display:grid;grid-template-columns:max-content 1fr;gap:.2em .8em;margin:.4em 0}dt{font-weight:bold}dd{margin:0;"
+        << "overflow-wrap:anywhere}.images{display:flex;flex-wrap:wrap;gap:.5em}figure{margin:0;flex:1 1 10em;max-width:16em}"
+        << "figure img{width:100%;image-rendering:pixelated;border:1px solid #999}figcaption{font-size:.85em}"
+        << "pre{white-space:pre-wrap;background:#eee;padding:.5em;overflow-wrap:anywhere}"
+        << "ul.steps{padding-left:1.2em}a{color:#05c}"
+        << "@media (max-width:30em){dl{grid-template-columns:1fr}dt{margin-top:.3em}}"
+        << "@media print{body{max-width:none;font-size:10pt}a{color:#000}.check{border-left-width:3px}"
+        << "a[href^=http]::after{content:\" (\" attr(href) \")\"}}</style></head><body>\n"
+        << "<h1>" << html(report.submission) << ": Tutorial 10 Part " << report.part << "</h1>\n";
+    out << "<div class=\"summary\"><p>Status: <b>" << html(report.status) << "</b>. Score: <b>" << report.score()
+        << "</b> / 100.</p>\n";
+    const std::vector<int> failed = report.failedSteps();
+    if (!failed.empty()) {
+        out << "<p class=\"fix\">" << html(report.fixFirst()) << "</p>\n<p>Steps that lose points: ";
+        for (std::size_t i = 0; i < failed.size(); ++i)
+            out << (i ? ", " : "") << "<a href=\"" << stepAnchor(failed[i]) << "\">step " << failed[i] << "</a>";
+        out << ".</p>\n";
+    } else if (report.status == "graded") {
+        out << "<p>Every check passed.</p>\n";
+    }
+    out << "<p>The score is the share of the rubric's points (" << html(rubricPath()) << ") of the steps that no failed "
+        << "check blames; a step loses its points once, however many checks see it. " << report.passedCount() << " of "
+        << report.checks.size() << " checks passed.</p></div>\n";
     if (!report.message.empty()) out << "<pre>" << html(report.message) << "</pre>\n";
-    if (!report.checks.empty()) {
-        out << "<table><tr><th>check</th><th>steps</th><th>result</th><th>measured</th><th>tolerance</th>"
-            << "<th>diagnosis</th></tr>\n";
+    // Failed checks first, in the order the chain computes them: the first is where it goes wrong.
+    for (int pass = 0; pass < 2; ++pass) {
+        bool heading = false;
         for (const Check& c : report.checks) {
-            out << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << html(c.id) << "</td><td>"
-                << stepList(c.steps) << "</td><td>" << (c.passed ? "passed" : "FAILED") << "</td><td>"
-                << html(c.measured) << "</td><td>" << html(c.tolerance) << "</td><td>" << html(c.diagnosis)
-                << "</td></tr>\n";
+            if (c.passed != (pass == 1)) continue;
+            if (!heading) out << "<h2>" << (pass == 0 ? "Failed checks" : "Passed checks") << "</h2>\n";
+            heading = true;
+            out << "<div class=\"check " << (c.passed ? "pass" : "fail") << "\"><p><span class=\"label\">"
+                << (c.passed ? "passed" : "FAILED") << "</span> " << html(c.id) << " (";
+            for (std::size_t i = 0; i < c.steps.size(); ++i)
+                out << (i ? ", " : "") << "<a href=\"" << stepAnchor(c.steps[i]) << "\">" << c.steps[i] << "</a>";
+            out << ")</p>\n<dl><dt>measured</dt><dd>" << html(c.measured) << "</dd><dt>tolerance</dt><dd>"
+                << html(c.tolerance) << "</dd>";
+            if (!c.passed) {
+                out << "<dt>diagnosis</dt><dd>" << html(c.diagnosis) << "</dd>";
+                const std::vector<int> blamed = failedSteps(c);
+                out << "<dt>costs</dt><dd>";
+                if (blamed.empty()) out << "nothing of its own (it follows from an earlier check)";
+                for (std::size_t i = 0; i < blamed.size(); ++i)
+                    out << (i ? ", " : "") << "<a href=\"" << stepAnchor(blamed[i]) << "\">step " << blamed[i] << "</a>";
+                out << "</dd>";
+            }
+            out << "</dl>\n";
+            if (!c.heatMap.empty()) {
+                out << "<div class=\"images\"><figure><img src=\"" << html(c.studentImage)
+                    << "\" alt=\"the submission's frame\"><figcaption>the submission</figcaption></figure><figure><img src=\""
+                    << html(c.referenceImage) << "\" alt=\"the expected frame\"><figcaption>expected</figcaption></figure>"
+                    << "<figure><img src=\"" << html(c.heatMap) << "\" alt=\"difference heat-map\"><figcaption>difference "
+                    << "heat-map</figcaption></figure></div>\n";
+            }
+            out << "</div>\n";
         }
-        out << "</table>\n";
     }
-    for (const Check& c : report.checks) {
-        if (c.heatMap.empty()) continue;
-        out << "<h2>" << html(c.id) << "</h2>\n<p>" << html(c.diagnosis) << "</p>\n<p><img src=\""
-            << html(c.studentImage) << "\" alt=\"student frame\"><img src=\"" << html(c.referenceImage)
-            << "\" alt=\"reference frame\"><img src=\"" << html(c.heatMap) << "\" alt=\"difference heat-map\"></p>"
-            << "<p>Left: the submission's frame; middle: the reference; right: the difference heat-map.</p>\n";
-    }
-    out << "</body></html>\n";
+    out << "<p>Step links point at " << html(stepAnchor(1).substr(0, stepAnchor(1).find('#')))
+        << " (T10_GRADE_TUTORIAL_URL sets the course site's page).</p>\n</body></html>\n";
     writeAtomically(path, out.str());
 }
 
 void writeGradebook(const std::vector<Report>& reports, const std::string& path) {
     std::ostringstream out;
-    out << "submission,part,status,score,passed,total,failed_checks\n";
+    out << "submission,part,status,score,passed,total,failed_checks,failed_steps\n";
     for (const Report& r : reports) {
         std::string failed;
         for (const Check& c : r.checks)
             if (!c.passed) failed += (failed.empty() ? "" : " ") + c.id;
         out << csvField(r.submission) << "," << r.part << "," << r.status << "," << r.score() << ","
-            << r.passedCount() << "," << r.checks.size() << "," << csvField(failed) << "\n";
+            << r.passedCount() << "," << r.checks.size() << "," << csvField(failed) << ","
+            << csvField([&] {
+                   std::string steps;
+                   for (int step : r.failedSteps()) steps += (steps.empty() ? "" : " ") + std::to_string(step);
+                   return steps;
+               }())
+            << "\n";
     }
     writeAtomically(path, out.str());
 }

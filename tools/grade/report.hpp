@@ -2,6 +2,7 @@
 // (gradebook.csv), and how the score is computed.
 #pragma once
 #include "checks.hpp"
+#include "rubric.hpp"
 
 #include <string>
 #include <vector>
@@ -16,15 +17,21 @@ struct Report {
     std::string message;     // for a status other than graded: what happened, with the tool's own words
     std::vector<Check> checks;
     double seconds = 0.0;    // wall time to grade it
-    // 0-100: the share of checks passed, rounded down, so only a submission that passes every check
-    // gets 100; 0 for any status other than graded.
+    Rubric rubric;           // points per step of the part (rubric.hpp)
+    // 0-100: the share of the rubric's points whose steps no failed check blames, rounded down; at
+    // most 99 while any check fails, so only a submission that passes every check gets 100; 0 for any
+    // status other than graded.
     int score() const;
     int passedCount() const;
+    // The steps the failed checks blame, each once, in tutorial order.
+    std::vector<int> failedSteps() const;
+    // "fix first: step 9 - <the diagnosis of the first check that blames it>", or "" when all passed.
+    std::string fixFirst() const;
 };
 
 void writeReportJson(const Report& report, const std::string& path);
 void writeReportHtml(const Report& report, const std::string& path);
-// One row per submission: submission,part,status,score,passed,total,failed_checks
+// One row per submission: submission,part,status,score,passed,total,failed_checks,failed_steps
 void writeGradebook(const std::vector<Report>& reports, const std::string& path);
 
 } // namespace t10::grade

@@ -4,6 +4,10 @@
 //   extremes.exr  64x64: 16 rows exactly black (a tone map without a guard divides 0 by 0
 //            there), below them grey steps from 0.001 to 50 in luminance, so that pixels sit below,
 //            at and far above the white point Yw = 0.22 and the bloom threshold 2.95 x Yw
+//   ramp.exr  64x64: 16 rows exactly black, above them every pixel a different luminance from 0.001
+//            to 50 (log-spaced, 0.35% apart), in four tints: t10-grade fits the white point, the
+//            bloom threshold and the luminance weights to it, so no value of them falls between two
+//            pixels by more than a fraction of a percent
 //   inf.exr, nan.exr  64x64 grey 0.1 with one texel of +infinity / NaN: through GL_R16F (no range
 //            mapping) log(inf) and log(NaN) reach the 1x1 luminance level, which is what a GPU whose
 //            glGenerateMipmap breaks float textures produces (exercise 40); through GL_R16 the value
@@ -70,6 +74,29 @@ t10::ImageF extremes() {
     return image;
 }
 
+t10::ImageF ramp() {
+    constexpr int kRampSize = 64;
+    constexpr int kBlackRows = 16;
+    constexpr int kLit = kRampSize * (kRampSize - kBlackRows);
+    // Tints with Rec. 709 luminance 1, different enough that the weights can be told apart.
+    constexpr float kTints[4][3] = {{1.0f, 1.0f, 1.0f}, {1.6f, 0.85f, 0.6f}, {0.5f, 1.1f, 1.6f}, {1.2f, 0.9f, 1.8f}};
+    t10::ImageF image(kRampSize, kRampSize, 4);
+    for (int y = 0; y < kRampSize; ++y) {
+        for (int x = 0; x < kRampSize; ++x) {
+            // Black rows first, then the ramp from its dimmest pixels, so that the bloom of the
+            // brightest rows does not reach the black ones (the 0/0 check needs them exactly black).
+            const bool black = y < kBlackRows;
+            const int index = (y - kBlackRows) * kRampSize + x;
+            const float lum = std::pow(10.0f, -3.0f + 4.7f * float(index) / float(kLit - 1));
+            const float* tint = kTints[x % 4];
+            const float tintLum = 0.2126f * tint[0] + 0.7152f * tint[1] + 0.0722f * tint[2];
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = black ? 0.0f : lum * tint[c] / tintLum;
+            image.at(x, y, 3) = 1.0f;
+        }
+    }
+    return image;
+}
+
 t10::ImageF greyWith(float special) {
     constexpr int kSpecialSize = 64;
     t10::ImageF image(kSpecialSize, kSpecialSize, 4);
@@ -93,9 +120,10 @@ int main(int argc, char** argv) {
         t10::writeExr(dir + "/hot.exr", hotPixel());
         t10::writeExr(dir + "/dim.exr", dimGradient());
         t10::writeExr(dir + "/extremes.exr", extremes());
+        t10::writeExr(dir + "/ramp.exr", ramp());
         t10::writeExr(dir + "/inf.exr", greyWith(std::numeric_limits<float>::infinity()));
         t10::writeExr(dir + "/nan.exr", greyWith(std::numeric_limits<float>::quiet_NaN()));
-        std::cout << "wrote hot.exr, dim.exr, extremes.exr, inf.exr and nan.exr into " << dir << "\n";
+        std::cout << "wrote hot.exr, dim.exr, extremes.exr, ramp.exr, inf.exr and nan.exr into " << dir << "\n";
         return 0;
     } catch (const t10::Error& error) {
         std::cerr << "make_test_images: error: " << error.what() << "\n";

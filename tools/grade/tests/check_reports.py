@@ -3,53 +3,145 @@
 
   check_reports.py reports REPORT_DIR NAME...    each named submission's report.json is as expected
   check_reports.py same BATCH_CSV SINGLE_CSV...   the rows of the single gradebooks equal the batch's
+  check_reports.py docs INSTRUCTORS_MD            the page's table of known mistakes lists mistakes.tsv's ids
 
 For a known mistake the check that guards its step must fail, name the mistake's catalogue id in
-its diagnosis and cover the step; the score must drop. Exit 0 when all hold, 1 otherwise."""
+its diagnosis and cover the step; the score must drop. For the fitted batch (make_submissions.FITTED)
+the mistake must be named with its value measured within 10 % and nothing else named; mistakes
+outside the catalogue (OUTSIDE) must fail with nothing named; Part 1 with steps 6-10 missing must
+score lower than Part 1 with one wrong constant. Every id named must be in mistakes.tsv, every
+finding of a parameter must carry its estimate. Exit 0 when all hold, 1 otherwise."""
 import csv
 import json
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_submissions import FITTED, OUTSIDE  # noqa: E402  (one table of the values set)
+
+CATALOGUE_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "mistakes.tsv")
+
+
+def load_catalogue():
+    table = {}
+    with open(CATALOGUE_PATH, encoding="utf-8") as f:
+        for line in f:
+            if not line.strip() or line.startswith("#"):
+                continue
+            mistake_id, parameter, tutorial, steps, _ = line.rstrip("\n").split("\t")
+            table[mistake_id] = {"parameter": None if parameter == "-" else parameter,
+                                 "steps": [int(s) for s in steps.split()]}
+    return table
+
+
+CATALOGUE = load_catalogue()
+
 # name: (status, [(check id, catalogue id, step)]); an empty list means a score of 100.
 EXPECTED = {
-    "reference1": ("graded", []), "shaders1": ("graded", []),
-    "reference2": ("graded", []), "shaders2": ("graded", []),
+    "reference1": ("graded", []), "shaders1": ("graded", []), "equivalent1": ("graded", []),
+    "reference2": ("graded", []), "shaders2": ("graded", []), "equivalent2": ("graded", []),
     "reference3": ("graded", []), "shaders3": ("graded", []), "equivalent": ("graded", []),
-    "rec601": ("graded", [("pot.log-luminance", "rec601", 3), ("pot.key", "rec601", 3), ("pot.bloom-threshold", "rec601", 18)]),
+    "rec601": ("graded", [("pot.log-luminance", "luminance-weights", 3)]),
     "white_point": ("graded", [("pot.frame", "white-point", 9)]),
     "threshold": ("graded", [("pot.bloom-threshold", "bloom-threshold", 18)]),
     "weight": ("graded", [("pot.frame", "bloom-weight", 20)]),
-    "tap": ("graded", [("pot.blur", "blur-tap", 27), ("pot.blur-passes", "blur-tap", 27)]),
+    "tap": ("graded", [("pot.blur", "blur-tap-inner", 27), ("pot.blur-passes", "blur-tap-inner", 27)]),
     "sigma": ("graded", [("pot.blur", "blur-sigma", 27), ("pot.blur-passes", "blur-sigma", 27)]),
     "no_unmapping": ("graded", [("pot.frame", "missing-unmapping", 9)]),
     "log2_exp": ("graded", [("pot.frame", "log2-exp-mismatch", 9)]),
     "black_nan": ("graded", [("extremes.frame", "black-0-over-0", 9)]),
     "bloom_after": ("graded", [("pot.frame", "bloom-after-tonemap", 20)]),
-    "full_res_offsets": ("graded", [("pot.blur", "blur-full-resolution-offsets", 32),
-                                    ("pot.blur-passes", "blur-full-resolution-offsets", 32)]),
+    # Offsets in full-resolution texels are exactly a sigma of half the tutorial's.
+    "full_res_offsets": ("graded", [("pot.blur", "blur-sigma", 27), ("pot.blur-passes", "blur-sigma", 27)]),
     "ceil_levels": ("graded", [("pot.luminance-levels", "ceil-log2-levels", 13)]),
-    "swapped_subroutines": ("graded", [("pot.blur", "swapped-subroutines", 32),
-                                       ("pot.blur-passes", "swapped-subroutines", 33)]),
+    "swapped_subroutines": ("graded", [("pot.blur-passes", "swapped-subroutines", 33)]),
     "viewport_reset": ("graded", [("pot.frame", "viewport-reset", 35)]),
-    "pass_count": ("graded", [("pot.blur", "pass-count", 34), ("pot.blur-pass-count", "pass-count", 34)]),
+    "pass_count": ("graded", [("pot.blur", "blur-passes", 34), ("pot.blur-pass-count", "blur-passes", 34)]),
+    "p1_steps_missing": ("graded", [("pot.frame", "tone-map-missing", 6), ("pot.frame", "tone-map-missing", 10)]),
+    "p1_one_constant": ("graded", [("pot.frame", "white-point", 9)]),
     "no_compile": ("build-failed", []),
     "shader_error": ("shader-error", []),
     "crash": ("crashed", []),
     "loop": ("timeout", []),
 }
+# The fitted batch: the id named, with the value set (make_submissions.FITTED).
+for _name, (_id, _parameter, _value, _file, _changes) in FITTED.items():
+    EXPECTED[_name] = ("graded", [])
+for _name in OUTSIDE:
+    EXPECTED[_name] = ("graded", [])
+# Values the older fixtures set, checked as the fitted batch is.
+FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-threshold", 2.5),
+                  "weight": ("bloom-weight", 0.5), "tap": ("blur-tap-inner", 0.424), "sigma": ("blur-sigma", 2.0),
+                  "full_res_offsets": ("blur-sigma", 1.25), "pass_count": ("blur-passes", 3),
+                  "rec601": ("luminance-weights", [0.299, 0.587, 0.114]), "p1_one_constant": ("white-point", 0.3)}
 # What the message of a submission that was not graded must say (the tool's own words).
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
             "crash": ["signal 11"], "loop": ["timed out after 20 s"]}
 # Per-pass checks (the capture of each blur pass): what their measurement or diagnosis must say.
 PASS_WORDS = {"swapped_subroutines": [("pot.blur-passes", "first failing pass: pass 1 vertical")],
-              "full_res_offsets": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
               "tap": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
-              "pass_count": [("pot.blur-pass-count", "6 blur passes"), ("pot.blur-pass-count", "3 pairs instead of 5")],
+              "pass_count": [("pot.blur-pass-count", "6 blur passes"), ("pot.blur-pass-count", "your blur passes measures 3")],
+              "full_res_offsets": [("pot.blur-passes", "first failing pass: pass 1 horizontal"), ("pot.blur", "exactly half")],
               **{name: [(f"{case}.blur-passes", "10 passes within tolerance") for case in ("pot", "npot", "extremes", "hot")]
                  + [("pot.blur-pass-count", "10 blur passes")] for name in ("reference3", "shaders3", "equivalent")}}
-KEYS = {"id", "steps", "passed", "measured", "tolerance", "diagnosis"}
+KEYS = {"id", "steps", "passed", "measured", "tolerance", "diagnosis", "blames", "mistakes"}
+
+
+def within(measured, expected, fraction=0.10):
+    """Each component of the measured value within `fraction` of the value set."""
+    if isinstance(expected, list):
+        return isinstance(measured, list) and len(measured) == len(expected) and all(
+            abs(m - e) <= fraction * abs(e) for m, e in zip(measured, expected))
+    if isinstance(measured, list):
+        return False
+    return abs(measured - expected) <= fraction * abs(expected) if expected != 0 else measured == 0
+
+
+def check_findings(name, report, fail):
+    """Every id named is in the catalogue, every parameter carries its estimate, and what the fitted
+    and outside batches expect holds. Returns the named (id, value) pairs for the summary."""
+    named = []
+    for c in report["checks"]:
+        for m in c["mistakes"]:
+            entry = CATALOGUE.get(m["id"])
+            if entry is None:
+                fail(f"{c['id']} names [{m['id']}], which mistakes.tsv lacks")
+                continue
+            if entry["parameter"] and "estimate" not in m:
+                fail(f"{c['id']} names [{m['id']}] without its estimate")
+            if "estimate" in m and m["estimate"]["parameter"] != entry["parameter"]:
+                fail(f"{c['id']} estimate names {m['estimate']['parameter']}, not {entry['parameter']}")
+            named.append((c["id"], m["id"], m.get("estimate", {}).get("value")))
+    expected = None
+    if name in FITTED:
+        expected = FITTED[name][0], FITTED[name][2]
+    elif name in FIXTURE_VALUES:
+        expected = FIXTURE_VALUES[name]
+    if expected is not None:
+        mistake_id, value = expected
+        mine = [(check, v) for check, i, v in named if i == mistake_id]
+        others = sorted({i for _, i, _ in named if i != mistake_id})
+        if not mine:
+            fail(f"[{mistake_id}] is not named; named: {others}")
+        for check, v in mine:
+            if not within(v, value):
+                fail(f"{check}: [{mistake_id}] measures {v}, set {value} (more than 10 % off)")
+        if others:
+            fail(f"wrong names beside [{mistake_id}]: {others}")
+        if mine and not others and all(within(v, value) for _, v in mine):
+            values = sorted({json.dumps(v) for _, v in mine})
+            print(f"{name}: [{mistake_id}] set {value}, measured {', '.join(values)} in {len(mine)} checks; "
+                  f"score {report['score']}, failed steps {report['failed_steps']}")
+    if name in OUTSIDE:
+        if named:
+            fail(f"a mistake outside the catalogue got names: {named}")
+        elif report["score"] >= 100:
+            fail("score 100 for a mistake outside the catalogue")
+        else:
+            first = next(c for c in report["checks"] if not c["passed"])
+            print(f"{name}: no name, score {report['score']}; {first['id']}: {first['diagnosis'][:160]}")
+    return named
 
 
 def check_report(report_dir, name, errors):
@@ -77,6 +169,12 @@ def check_report(report_dir, name, errors):
         print(f"{name}: {status} as expected ({report['message'].splitlines()[0][:120]})")
         return
     checks = {c["id"]: c for c in report["checks"]}
+    check_findings(name, report, fail)
+    failed_ids = [c["id"] for c in report["checks"] if not c["passed"]]
+    if (report["score"] == 100) != (not failed_ids):
+        fail(f"score {report['score']} with failed checks {failed_ids}")
+    if not report.get("fix_first", "") and failed_ids:
+        fail("failed checks but no fix_first line")
     for c in report["checks"]:
         if set(c) - {"images"} != KEYS:
             fail(f"check {c.get('id')} has keys {sorted(c)}")
@@ -95,6 +193,8 @@ def check_report(report_dir, name, errors):
         text = checks[check_id]["measured"] + " " + checks[check_id]["diagnosis"]
         if words not in text:
             fail(f"{check_id} does not say '{words}': {text[:300]}")
+    if name in FITTED or name in OUTSIDE:
+        return
     if not failures:
         failed = [c["id"] for c in report["checks"] if not c["passed"]]
         if report["score"] != 100 or failed:
@@ -116,8 +216,31 @@ def check_report(report_dir, name, errors):
             fail(f"{check_id} covers steps {c['steps']}, not step {step}")
         else:
             print(f"{name}: score {report['score']}, {check_id} failed as [{mistake}] (step {step}): {c['measured']}")
-    if name == "pass_count" and "3 pairs" not in checks["pot.blur"]["diagnosis"]:
-        fail("the pass count diagnosis does not say 3 pairs")
+
+def compare_part1(report_dir, errors):
+    """Five missing steps cost more than one wrong constant."""
+    scores = {}
+    for name in ("p1_steps_missing", "p1_one_constant"):
+        with open(os.path.join(report_dir, name, "report.json"), encoding="utf-8") as f:
+            scores[name] = json.load(f)["score"]
+    if scores["p1_steps_missing"] >= scores["p1_one_constant"]:
+        errors.append(f"Part 1 with steps 6-10 missing scores {scores['p1_steps_missing']}, not below one wrong "
+                      f"constant's {scores['p1_one_constant']}")
+    else:
+        print(f"Part 1: steps 6-10 missing scores {scores['p1_steps_missing']}, one wrong constant "
+              f"{scores['p1_one_constant']}")
+
+
+def docs_ids(path):
+    """The ids in the first column of the table under "## Known mistakes"."""
+    ids, inside = [], False
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                inside = line.startswith("## Known mistakes")
+            elif inside and line.startswith("| `"):
+                ids.append(line.split("`")[1])
+    return ids
 
 
 def rows(path):
@@ -126,13 +249,24 @@ def rows(path):
 
 
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same", "docs"):
         print(__doc__, file=sys.stderr)
         return 2
     errors = []
-    if sys.argv[1] == "reports":
+    if sys.argv[1] == "docs":
+        listed = docs_ids(sys.argv[2])
+        if listed != list(CATALOGUE):
+            missing = [i for i in CATALOGUE if i not in listed]
+            extra = [i for i in listed if i not in CATALOGUE]
+            errors.append(f"{sys.argv[2]}: the table of known mistakes differs from mistakes.tsv (order included): "
+                          f"missing {missing}, not in the catalogue {extra}")
+        else:
+            print(f"{sys.argv[2]} lists the {len(listed)} mistakes of mistakes.tsv in its order")
+    elif sys.argv[1] == "reports":
         for name in sys.argv[3:]:
             check_report(sys.argv[2], name, errors)
+        if "p1_steps_missing" in sys.argv[3:] and "p1_one_constant" in sys.argv[3:]:
+            compare_part1(sys.argv[2], errors)
     else:
         batch = rows(sys.argv[2])
         for single in sys.argv[3:]:

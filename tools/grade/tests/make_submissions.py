@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
 """Writes the grader's test submissions into OUT_DIR/<part>/<name>/: each reference stage, a
-shaders-only copy of each, an equivalent rewrite of Part 3's tone map, every known mistake of the
+shaders-only copy of each, an equivalent rewrite of each part's tone map, every known mistake of the
 catalogue applied to a copy of Part 3, and submissions that do not build, whose shader does not
-compile, that crash and that loop forever.
+compile, that crash and that loop forever. Then the fitted batch (FITTED): every parameter of the
+catalogue at two values the grader's own fixtures above do not use, mistakes outside the catalogue
+(OUTSIDE), and Part 1 with steps 6-10 missing beside Part 1 with one wrong constant (PART1).
 
 Every mistake is one textual change of the current reference file, so it never drifts from it; a
 change whose text is no longer found is an error (exit 1), not a silently unchanged copy.
@@ -55,6 +57,85 @@ MISTAKES = {
 }
 
 
+# The fitted batch: name -> (catalogue id, parameter, value set, file, [(old, new), ...]) on Part 3.
+# check_reports.py reads this table: the id must be named with its value measured within 10 %.
+def _value(name, parameter, value, file, changes, mistake_id=None):
+    return name, (mistake_id or parameter.replace("_", "-"), parameter, value, file, changes)
+
+
+WEIGHTS = "vec3(0.2126f, 0.7152f, 0.0722f)"
+FITTED = dict([
+    _value("fit_weights_a", "luminance_weights", [0.25, 0.65, 0.10], "PostProcessInit.frag",
+           [(WEIGHTS, "vec3(0.25f, 0.65f, 0.10f)")]),
+    _value("fit_weights_b", "luminance_weights", [0.30, 0.60, 0.10], "PostProcessInit.frag",
+           [(WEIGHTS, "vec3(0.30f, 0.60f, 0.10f)")]),
+    _value("fit_epsilon_a", "epsilon", 1e-4, "PostProcess.frag",
+           [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.0001f;")]),
+    _value("fit_epsilon_b", "epsilon", 1e-6, "PostProcess.frag",
+           [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.000001f;")]),
+    _value("fit_white_a", "white_point", 0.11, "PostProcess.frag",
+           [("const float fYwhite = 0.22f;", "const float fYwhite = 0.11f;")]),
+    _value("fit_white_b", "white_point", 0.4, "PostProcess.frag",
+           [("const float fYwhite = 0.22f;", "const float fYwhite = 0.4f;")]),
+    _value("fit_grey_a", "middle_grey", 1.1, "PostProcess.frag", [("1.03f - (2.0f", "1.1f - (2.0f")]),
+    _value("fit_grey_b", "middle_grey", 0.95, "PostProcess.frag", [("1.03f - (2.0f", "0.95f - (2.0f")]),
+    _value("fit_threshold_a", "bloom_threshold", 2.0, "PostProcessInit.frag", [("fYwhite * 2.95f", "fYwhite * 2.0f")]),
+    _value("fit_threshold_b", "bloom_threshold", 4.0, "PostProcessInit.frag", [("fYwhite * 2.95f", "fYwhite * 4.0f")]),
+    _value("fit_weight_a", "bloom_weight", 0.75, "PostProcess.frag", [("(v3Bloom * 0.98f)", "(v3Bloom * 0.75f)")]),
+    _value("fit_weight_b", "bloom_weight", 1.5, "PostProcess.frag", [("(v3Bloom * 0.98f)", "(v3Bloom * 1.5f)")]),
+    _value("fit_sigma_a", "blur_sigma", 1.0, "Gauss.frag",
+           [("const float fGaussSigma = 2.5f;", "const float fGaussSigma = 1.0f;")]),
+    _value("fit_sigma_b", "blur_sigma", 3.5, "Gauss.frag",
+           [("const float fGaussSigma = 2.5f;", "const float fGaussSigma = 3.5f;")]),
+    _value("fit_inner_a", "blur_tap_inner", 0.824, "Gauss.frag", [("0.524f * v2InvResolution", "0.824f * v2InvResolution")]),
+    _value("fit_inner_b", "blur_tap_inner", 0.3, "Gauss.frag", [("0.524f * v2InvResolution", "0.3f * v2InvResolution")]),
+    _value("fit_outer_a", "blur_tap_outer", 1.0, "Gauss.frag", [("1.282f * v2InvResolution", "1.0f * v2InvResolution")]),
+    _value("fit_outer_b", "blur_tap_outer", 1.8, "Gauss.frag", [("1.282f * v2InvResolution", "1.8f * v2InvResolution")]),
+    _value("fit_passes_a", "blur_passes", 2, HOST, [("const int iBlurPasses = 5;", "const int iBlurPasses = 2;")]),
+    _value("fit_passes_b", "blur_passes", 7, HOST, [("const int iBlurPasses = 5;", "const int iBlurPasses = 7;")]),
+    _value("fit_key_level_a", "key_level", 0, "PostProcess.frag",
+           [("texture(s2LuminanceKeyTexture, v2UV, 1024)", "texture(s2LuminanceKeyTexture, v2UV)")]),
+    _value("fit_key_level_b", "key_level", 2, "PostProcess.frag",
+           [("texture(s2LuminanceKeyTexture, v2UV, 1024)", "texture(s2LuminanceKeyTexture, v2UV, 2.0f)")]),
+])
+# Mistakes outside the catalogue: they must fail, and no check may name a catalogue mistake.
+OUTSIDE = {
+    "out_gamma": ("PostProcess.frag", [("v3ColourOut = toneMap(v3RetColour, v2UV);",
+                                        "v3ColourOut = pow(toneMap(v3RetColour, v2UV), vec3(1.0f / 2.2f));")]),
+    "out_swizzle": ("PostProcess.frag", [("v3ColourOut = toneMap(v3RetColour, v2UV);",
+                                          "v3ColourOut = toneMap(v3RetColour, v2UV).bgr;")]),
+    "out_blur_centre": ("Gauss.frag", [("v3ColourOut = v3Filtered / 5.0f;",
+                                        "v3ColourOut = (v3Filtered + texture(s2InputTexture, v2UV).rgb) / 6.0f;")]),
+    "out_threshold_max": ("PostProcessInit.frag", [("(fY >= fYwhite * 2.95f)",
+                                                    "(max(v3AccumColour.r, max(v3AccumColour.g, v3AccumColour.b)) >= fYwhite * 2.95f)")]),
+}
+EQUIVALENT = [("return log2(fVal) * 0.30102999566374217366165225171822f;", "return log(fVal) / log(10.0f);"),
+              ("float fY = dot(v3RetColour, v3LuminanceConvert);",
+               "float fY = v3RetColour.r * 0.2126f + v3RetColour.g * 0.7152f + v3RetColour.b * 0.0722f;")]
+# Part 1: steps 6-10 not done (the frame is the accumulation colour) against one wrong constant.
+PART1 = {
+    "p1_steps_missing": ("PostProcess.frag", [("v3ColourOut = toneMap(v3RetColour, v2UV);", "v3ColourOut = v3RetColour;")]),
+    "p1_one_constant": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.3f;")]),
+    "equivalent1": ("PostProcess.frag", EQUIVALENT),
+}
+PART2 = {"equivalent2": ("PostProcess.frag", EQUIVALENT)}
+
+
+def write_mutant(source, out, part, name, file, changes):
+    with open(os.path.join(source, STAGES[part], file), encoding="utf-8") as f:
+        text = f.read()
+    for old, new in changes:
+        if old not in text:
+            print(f"make_submissions.py: {name}: '{old}' not found in {STAGES[part]}/{file}", file=sys.stderr)
+            return False
+        text = text.replace(old, new)
+    folder = os.path.join(out, f"part{part}", name)
+    os.makedirs(folder)
+    with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
+        f.write(text)
+    return True
+
+
 def stage_files(source, stage):
     folder = os.path.join(source, stage)
     return sorted(f for f in os.listdir(folder) if f == HOST or f.endswith((".frag", ".vert")))
@@ -89,6 +170,13 @@ def main():
         os.makedirs(folder)
         with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
             f.write(text)
+    batches = [(3, name, entry[3], entry[4]) for name, entry in FITTED.items()]
+    batches += [(3, name, file, changes) for name, (file, changes) in OUTSIDE.items()]
+    batches += [(1, name, file, changes) for name, (file, changes) in PART1.items()]
+    batches += [(2, name, file, changes) for name, (file, changes) in PART2.items()]
+    for part, name, file, changes in batches:
+        if not write_mutant(source, out, part, name, file, changes):
+            return 1
     print(f"wrote the test submissions into {out}")
     return 0
 

@@ -11,12 +11,19 @@ double luminance(const Rgb& c) {
     return contract::kLumaRed * c[0] + contract::kLumaGreen * c[1] + contract::kLumaBlue * c[2];
 }
 
+double luminance(const Rgb& c, const Settings& settings) {
+    const Rgb& w = settings.lumaWeights;
+    return w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
+}
+
 double rangeMappedLogLuminance(double y, const Settings& settings) {
-    return (std::log(y + kEpsilon) - std::log(kEpsilon)) / (std::log(settings.whitePoint) - std::log(kEpsilon));
+    const double e = settings.epsilon;
+    return (std::log(y + e) - std::log(e)) / (std::log(settings.whitePoint) - std::log(e));
 }
 
 double keyFromMapped(double mapped, const Settings& settings) {
-    return std::exp(mapped * (std::log(settings.whitePoint) - std::log(kEpsilon)) + std::log(kEpsilon));
+    const double e = settings.epsilon;
+    return std::exp(mapped * (std::log(settings.whitePoint) - std::log(e)) + std::log(e));
 }
 
 double toUnorm16(double v) { return std::round(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0; }
@@ -26,7 +33,7 @@ double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Sett
     for (int y = 0; y < accumulation.height; ++y) {
         for (int x = 0; x < accumulation.width; ++x) {
             const Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
-            const double mapped = rangeMappedLogLuminance(luminance(c), settings);
+            const double mapped = rangeMappedLogLuminance(luminance(c, settings), settings);
             sum += asR16 ? toUnorm16(mapped) : mapped;
         }
     }
@@ -44,13 +51,18 @@ double meanLogLuminance(const ImageF& accumulation) {
     return sum / (double(accumulation.width) * accumulation.height);
 }
 
-Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
-    const double y = luminance(colour);
-    if (y <= 0.0) return {0.0, 0.0, 0.0};
-    const double middleGrey = 1.03 - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
+double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
+    if (!(y > 0.0)) return 0.0;
+    const double middleGrey = settings.middleGrey - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
     const double relative = middleGrey * y / sceneKey;
     const double yw = settings.whitePoint;
-    const double mapped = relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
+    return relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
+}
+
+Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
+    const double y = luminance(colour, settings);
+    if (y <= 0.0) return {0.0, 0.0, 0.0};
+    const double mapped = toneMapLuminance(y, sceneKey, settings);
     return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
 }
 
@@ -146,10 +158,10 @@ ImageF boxDownsample(const ImageF& level0) {
     return level1;
 }
 
-ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal) {
+ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal, const Settings& settings) {
     ImageF out(dstWidth, dstHeight, 3);
-    const double step1 = kTap1 * kSigma / (horizontal ? dstWidth : dstHeight);
-    const double step2 = kTap2 * kSigma / (horizontal ? dstWidth : dstHeight);
+    const double step1 = settings.tapInner * settings.sigma / (horizontal ? dstWidth : dstHeight);
+    const double step2 = settings.tapOuter * settings.sigma / (horizontal ? dstWidth : dstHeight);
     const double offsets[5] = {-step2, -step1, 0.0, step1, step2};
     for (int y = 0; y < dstHeight; ++y) {
         for (int x = 0; x < dstWidth; ++x) {
@@ -166,14 +178,14 @@ ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool hori
     return out;
 }
 
-ImageF gaussianBloom(const ImageF& level0, int passes, FloatStore store) {
+ImageF gaussianBloom(const ImageF& level0, int passes, FloatStore store, const Settings& settings) {
     const int halfWidth = std::max(1, level0.width / 2);
     const int halfHeight = std::max(1, level0.height / 2);
     ImageF level1 = level0;
     for (int pass = 0; pass < passes; ++pass) {
-        ImageF blur = gaussianPass(level1, halfWidth, halfHeight, true);
+        ImageF blur = gaussianPass(level1, halfWidth, halfHeight, true, settings);
         storeR11G11B10F(blur, store);
-        level1 = gaussianPass(blur, halfWidth, halfHeight, false);
+        level1 = gaussianPass(blur, halfWidth, halfHeight, false, settings);
         storeR11G11B10F(level1, store);
     }
     return level1;

@@ -1,7 +1,8 @@
 // CPU reference of Tutorial 10's post-processing chain in double precision: luminance, the range
 // mapped log luminance and scene key, the tone map operator, the bloom threshold, the 2x2
-// downsample and the five-tap importance-sampled Gaussian passes. The numeric tests run it on
-// buffers read back from the GPU and compare.
+// downsample and the five-tap importance-sampled Gaussian passes, every constant a field of
+// Settings (defaults from contract.hpp). GL-free (library t10_reference_math): the numeric tests run
+// it on buffers read back from the GPU, and t10-grade's mistake models are other Settings of it.
 #pragma once
 #include "t10/contract.hpp"
 #include "t10/image.hpp"
@@ -21,15 +22,25 @@ constexpr double kTap1 = contract::kInnerTap; // inner taps at +-0.524 sigma
 constexpr double kTap2 = contract::kOuterTap; // outer taps at +-1.282 sigma
 constexpr int kBlurPasses = contract::kBlurPasses;
 
-// The settings extras/ makes variable (steps 37-38); the defaults are the tutorial's.
+using Rgb = std::array<double, 3>;
+
+// Every constant of the chain. extras/ makes the white point and the bloom weight variable (steps
+// 37-38); t10-grade's mistake models are other values of the rest. The defaults are the tutorial's.
 struct Settings {
     double whitePoint = kYwhite;
     double bloomWeight = kBloomWeight;
+    Rgb lumaWeights{contract::kLumaRed, contract::kLumaGreen, contract::kLumaBlue};
+    double epsilon = kEpsilon;
+    double middleGrey = 1.03; // the constant of 1.03 - 2 / (2 + log10(Ya + 1)), step 9
+    double bloomThresholdFactor = kBloomThresholdFactor;
+    double sigma = kSigma;    // in target texels
+    double tapInner = kTap1;  // in sigma
+    double tapOuter = kTap2;
+    int blurPasses = kBlurPasses;
 };
 
-using Rgb = std::array<double, 3>;
-
 double luminance(const Rgb& c);
+double luminance(const Rgb& c, const Settings& settings);
 // (log(Y + eps) - log(eps)) / (log(Yw) - log(eps)), not clamped.
 double rangeMappedLogLuminance(double y, const Settings& settings = {});
 // Inverse of the range mapping followed by exp: the key Ya from a mapped value.
@@ -43,6 +54,8 @@ double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Sett
 double meanLogLuminance(const ImageF& accumulation);
 // The tone map of steps 8-9 for a linear HDR colour and the key Ya (black stays black).
 Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
+// The tone map of a luminance alone: the new luminance Y' of step 9 (0 for y <= 0).
+double toneMapLuminance(double y, double sceneKey, const Settings& settings = {});
 // How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
 std::uint8_t toUnorm8(double v);
 
@@ -66,10 +79,11 @@ ImageF bloomThreshold(const ImageF& accumulation, double threshold = kBloomThres
 ImageF boxDownsample(const ImageF& level0);
 // One Gaussian pass (steps 27, 32-34): each output pixel of a dstWidth x dstHeight target averages
 // five bilinear samples of `source` at its centre and +-kTap1, +-kTap2 sigma target texels along one axis.
-ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal);
+ImageF gaussianPass(const ImageF& source, int dstWidth, int dstHeight, bool horizontal, const Settings& settings = {});
 // The whole Part 3 blur: `passes` horizontal + vertical pairs at half resolution from bloom level 0,
 // each pass's result stored as the R11G11B10F targets store it.
-ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses, FloatStore store = FloatStore::Exact);
+ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses, FloatStore store = FloatStore::Exact,
+                     const Settings& settings = {});
 
 // The final frame: optionally add the bloom weight x bloom (bilinear from the given level) to each
 // accumulation texel, tone map with Ya, convert to 8 bits.

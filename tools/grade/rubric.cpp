@@ -1,0 +1,63 @@
+// Reading the rubric; see rubric.hpp.
+#include "rubric.hpp"
+
+#include "checks.hpp"
+#include "t10/error.hpp"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace t10::grade {
+
+std::string rubricPath() {
+    const char* path = std::getenv("T10_GRADE_RUBRIC");
+    return path != nullptr && *path != '\0' ? path : T10_GRADE_RUBRIC_DEFAULT;
+}
+
+Rubric loadRubric(int part) {
+    const std::string path = rubricPath();
+    std::ifstream in(path);
+    if (!in) throw Error(path + ": cannot open the rubric: " + std::strerror(errno));
+    double fallback = 1.0;
+    std::map<int, double> listed;
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++number;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream fields(line);
+        std::string what;
+        double points = 0.0;
+        if (!(fields >> what)) continue;
+        std::string extra;
+        const std::string where = path + ":" + std::to_string(number) + ": ";
+        if (!(fields >> points) || points < 0.0 || (fields >> extra))
+            throw Error(where + "expected STEP POINTS, FIRST-LAST POINTS or default POINTS (points >= 0)");
+        if (what == "default") {
+            fallback = points;
+            continue;
+        }
+        int first = 0, last = 0;
+        char dash = 0;
+        std::istringstream range(what);
+        if (!(range >> first)) throw Error(where + "'" + what + "' is not a step number");
+        last = first;
+        if (range >> dash && (dash != '-' || !(range >> last))) throw Error(where + "'" + what + "' is not FIRST-LAST");
+        if (first < 1 || last < first) throw Error(where + "'" + what + "' is not a step range");
+        for (int step = first; step <= last; ++step) listed[step] = points;
+    }
+    Rubric rubric;
+    double total = 0.0;
+    for (int step : partSteps(part)) {
+        const auto at = listed.find(step);
+        rubric[step] = at == listed.end() ? fallback : at->second;
+        total += rubric[step];
+    }
+    if (!(total > 0.0)) throw Error(path + ": the steps of Part " + std::to_string(part) + " are worth 0 points");
+    return rubric;
+}
+
+} // namespace t10::grade
