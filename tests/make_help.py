@@ -11,7 +11,7 @@ import subprocess
 import sys
 
 # Rules that only other rules use: not for a person to type.
-HELPERS = {"grade-args", "grade-deps-or-skip"}
+HELPERS = {"grade-args", "grade-deps-or-skip", "check-args", "platform-part", "run-stage"}
 
 
 def main():

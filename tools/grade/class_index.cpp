@@ -143,8 +143,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
         ++statuses[r->status];
     }
     const int most = std::max(1, *std::max_element(std::begin(bins), std::end(bins)));
-    std::vector<int> steps = partSteps(part);
-    steps.push_back(kWholeFrame);
+    const std::vector<int> steps = partSteps(part);
 
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Tutorial 10 Part " << part
@@ -161,12 +160,11 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
         out << "<tr><td class=\"l\">" << label << "</td><td class=\"l\"><span class=\"bar\" style=\"width:"
             << bins[b] * 20 * 10 / most << "px\"></span> " << bins[b] << "</td></tr>\n";
     }
-    out << "</table>\n<h2>Failed steps</h2>\n<p>A cell is red where a check covering the step failed, green where all "
-        << "passed, white where no check covers the step, grey where the submission was not graded (its status says "
-        << "why); \"frame\" is the whole frame against the reference stage (FLIP), which covers every step. Each name "
-        << "links to its report.</p>\n"
+    out << "</table>\n<h2>Failed steps</h2>\n<p>A cell is red where a failed check blames the step (the "
+        << "rubric's points for it are lost), green where none does, grey where the submission was not graded "
+        << "(its status says why). Hover a red cell for the checks. Each name links to its report.</p>\n"
         << "<table><tr><th>submission</th><th>score</th><th>status</th>";
-    for (int step : steps) out << "<th>" << (step == kWholeFrame ? std::string("frame") : std::to_string(step)) << "</th>";
+    for (int step : steps) out << "<th>" << step << "</th>";
     out << "</tr>\n";
     std::map<int, int> failures;
     for (const Report* r : sorted) {

@@ -105,11 +105,10 @@ std::string failures(const Report& report, const StepResult& step) {
 }
 
 std::string stepName(const Report& report, int step) {
-    if (step == kWholeFrame) return "Part " + std::to_string(report.part) + " whole frame";
     return "Part " + std::to_string(report.part) + " step " + std::to_string(step);
 }
 
-std::string stepNumber(int step) { return step == kWholeFrame ? "whole-frame" : std::to_string(step); }
+std::string stepNumber(int step) { return std::to_string(step); }
 
 std::string readBinary(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -243,37 +242,34 @@ std::string classroom(const Report& report) {
 } // namespace
 
 std::vector<StepResult> stepResults(const Report& report) {
-    std::map<int, StepResult> byStep;
-    const std::vector<int> all = partSteps(report.part);
-    if (report.checks.empty()) {
-        for (int step : all) byStep[step].maxPoints = 100.0 / static_cast<double>(all.size());
-    } else {
-        const double perCheck = 100.0 / static_cast<double>(report.checks.size());
-        for (const Check& c : report.checks) {
-            // A check of every step (FLIP against the reference stage) tells no step apart: it is a test
-            // of its own rather than a failure of every step.
-            const std::vector<int> steps = c.steps == all ? std::vector<int>{kWholeFrame} : c.steps;
-            for (int step : steps) {
-                StepResult& s = byStep[step];
-                s.checks.push_back(&c);
-                s.maxPoints += perCheck / static_cast<double>(steps.size());
-                if (c.passed) s.points += perCheck / static_cast<double>(steps.size());
-            }
-        }
+    // One test per step of the part, worth its share of the rubric's points (report.hpp's score): a step
+    // fails when a failed check blames it (Report::failedSteps), so one mistake costs its step once.
+    const std::vector<int> failed = report.failedSteps();
+    double total = 0.0;
+    for (int step : partSteps(report.part)) {
+        const auto at = report.rubric.find(step);
+        total += at == report.rubric.end() ? 1.0 : at->second;
     }
-    // Rounded to 0.01 cumulatively, so that the steps' maxima add up to exactly 100.00 and their points
-    // to the exact share of checks passed (within 0.01: a step cannot earn more than its maximum).
     std::vector<StepResult> out;
-    double maxSoFar = 0.0, pointsSoFar = 0.0;
-    for (auto& [step, s] : byStep) {
+    double maxSoFar = 0.0;
+    for (int step : partSteps(report.part)) {
+        StepResult s;
         s.step = step;
-        s.passed = !s.checks.empty() && std::all_of(s.checks.begin(), s.checks.end(), [](const Check* c) { return c->passed; });
-        const double maxRounded = hundredths(maxSoFar + s.maxPoints) - hundredths(maxSoFar);
-        const double pointsRounded = hundredths(pointsSoFar + s.points) - hundredths(pointsSoFar);
-        maxSoFar += s.maxPoints;
-        pointsSoFar += s.points;
-        s.maxPoints = hundredths(maxRounded);
-        s.points = s.passed ? s.maxPoints : std::min(hundredths(pointsRounded), s.maxPoints);
+        const auto at = report.rubric.find(step);
+        const double weight = at == report.rubric.end() ? 1.0 : at->second;
+        for (const Check& c : report.checks) {
+            const std::vector<int> blamed = failedSteps(c);
+            const bool covers = std::find(c.steps.begin(), c.steps.end(), step) != c.steps.end();
+            const bool blames = std::find(blamed.begin(), blamed.end(), step) != blamed.end();
+            if (blames || (covers && c.passed)) s.checks.push_back(&c);
+        }
+        s.passed = report.status == "graded" && !report.checks.empty() &&
+                   std::find(failed.begin(), failed.end(), step) == failed.end();
+        // Rounded to 0.01 cumulatively, so that the maxima add up to exactly 100.00.
+        const double exact = total > 0.0 ? 100.0 * weight / total : 0.0;
+        s.maxPoints = hundredths(hundredths(maxSoFar + exact) - hundredths(maxSoFar));
+        maxSoFar += exact;
+        s.points = s.passed ? s.maxPoints : 0.0;
         out.push_back(s);
     }
     return out;

@@ -12,21 +12,18 @@
 
 namespace t10::grade {
 
-// The test of the checks that cover every step of the part (FLIP of the whole frame against the
-// reference stage): it comes after the steps.
-constexpr int kWholeFrame = 1000;
-
 struct StepResult {
-    int step = 0;                      // a tutorial step, or kWholeFrame
-    std::vector<const Check*> checks;  // the checks that cover the step (empty when not graded)
-    bool passed = false;               // every check of the step passed
+    int step = 0;                      // a tutorial step
+    std::vector<const Check*> checks;  // the failed checks that blame the step, the passed ones that cover it
+    bool passed = false;               // graded, and no failed check blames the step
     double points = 0.0;               // earned, rounded to 0.01
     double maxPoints = 0.0;            // rounded to 0.01; a report's steps add up to exactly 100
 };
 
-// Points per step, from today's score (the share of checks passed): each check is worth 100 / checks,
-// split evenly over the steps it covers; a check covering every step goes to the kWholeFrame test. A report that was not graded (build-failed, crashed, ...)
-// has no checks: every step of the part gets an equal share and 0 points.
+// One result per tutorial step of the part, worth the step's share of the rubric's points
+// (rubric.txt): passed unless a failed check blames the step (Report::failedSteps), so the steps'
+// points add up to the report's score before its cap of 99 while any check fails. A report that
+// was not graded (build-failed, crashed, ...) fails every step.
 std::vector<StepResult> stepResults(const Report& report);
 
 // The names --format accepts.

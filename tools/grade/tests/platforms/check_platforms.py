@@ -27,7 +27,6 @@ FILES = {"gradescope": "gradescope-results.json", "prairielearn": "prairielearn-
 EXPECTED = {"reference3": ("graded", True, []), "weight": ("graded", False, [20]),
             "no_compile": ("build-failed", False, []), "crash": ("crashed", False, [])}
 EPSILON = 0.005
-WHOLE_FRAME = 1000  # formats.hpp kWholeFrame: the test of the checks covering every step (FLIP)
 
 
 def load(path):
@@ -49,7 +48,7 @@ def tests_of(fmt, data):
     """[(step, points, max points or None, passed)] from a platform's tests."""
     out = []
     for t in data["tests"]:
-        step = WHOLE_FRAME if t["name"].endswith(" whole frame") else int(t["name"].rsplit(" ", 1)[1])
+        step = int(t["name"].rsplit(" ", 1)[1])
         if fmt == "gradescope":
             out.append((step, t["score"], t["max_score"], t["status"] == "passed"))
         elif fmt == "prairielearn":
@@ -71,29 +70,30 @@ def check_results(fmt, report_dir, names):
             errors.append(f"{name}: report.json status {report['status']}, expected {status}")
         tests = tests_of(fmt, data)
         part_steps = {"1": 16, "2": 25, "3": 36}[str(report["part"])]
-        # Graded: a test per step some check covers, and one for the checks of every step (the whole
-        # frame); not graded (no checks): a test per step of the part, each worth an equal share.
+        # A test per step of the part, worth the step's share of the rubric's points (report.json's
+        # "steps"); it fails exactly when the step is in report.json's "failed_steps" (or the
+        # submission was not graded), so the points add up to the rubric's share of steps kept.
         every = list(range(1, part_steps + 1))
-        covered = set()
-        for c in report["checks"]:
-            covered |= {WHOLE_FRAME} if c["steps"] == every else set(c["steps"])
-        expected_steps = sorted(covered) if report["checks"] else every
-        if sorted(t[0] for t in tests) != expected_steps:
-            errors.append(f"{name}: the tests are not one per tutorial step the checks cover: {[t[0] for t in tests]}, "
-                          f"expected {expected_steps}")
+        if sorted(t[0] for t in tests) != every:
+            errors.append(f"{name}: the tests are not one per tutorial step: {[t[0] for t in tests]}")
         maxima = [t[2] for t in tests if t[2] is not None]
         if maxima and abs(sum(maxima) - 100) > EPSILON:
             errors.append(f"{name}: the steps' maxima add up to {sum(maxima)}, not 100")
+        rubric = {e["step"]: float(e["points"]) for e in report.get("steps", [])} or {s: 1.0 for s in every}
+        total = sum(rubric.get(s, 1.0) for s in every)
+        failed = set(report.get("failed_steps", [])) if report["status"] == "graded" else set(every)
+        exact = 100.0 * sum(rubric.get(s, 1.0) for s in every if s not in failed) / total
         earned = sum(t[1] for t in tests)
-        checks = report["checks"]
-        exact = 100.0 * sum(c["passed"] for c in checks) / len(checks) if checks else 0.0
-        # Each step's points are rounded to 0.01 cumulatively: the sum is within 0.01 of the exact share.
-        if abs(earned - exact) > 0.01 + EPSILON:
-            errors.append(f"{name}: the steps' points add up to {earned:.2f}, the share of checks passed is {exact:.2f}")
+        # Each maximum is rounded to 0.01 cumulatively: the sum is within 0.01 per step of the exact share.
+        if abs(earned - exact) > 0.01 * len(every) + EPSILON:
+            errors.append(f"{name}: the steps' points add up to {earned:.2f}, the rubric's share kept is {exact:.2f}")
         score = {"gradescope": lambda: data["score"], "prairielearn": lambda: data["score"] * 100,
                  "classroom": lambda: earned}[fmt]()
-        if abs(score - (report["score"] if fmt != "classroom" else exact)) > 0.5 + EPSILON:
+        # report.json's score is the share rounded down and capped at 99 while a check fails.
+        if fmt != "classroom" and abs(score - report["score"]) > 0.5 + EPSILON:
             errors.append(f"{name}: {fmt} score {score} but report.json says {report['score']}")
+        if fmt == "classroom" and abs(score - exact) > 0.01 * len(every) + EPSILON:
+            errors.append(f"{name}: classroom points {score} but the rubric's share kept is {exact:.2f}")
         if full and (report["score"] != 100 or not all(t[3] for t in tests)):
             errors.append(f"{name}: expected full marks, got {score} with failed steps {[t[0] for t in tests if not t[3]]}")
         if not full and score >= 100:
@@ -101,15 +101,9 @@ def check_results(fmt, report_dir, names):
         for step in failing:
             if any(t[3] for t in tests if t[0] == step):
                 errors.append(f"{name}: step {step} passed although its mistake is in it")
-        # A step's test passes exactly when every check covering it passed (report.json).
-        if report["checks"]:
-            verdict = {}
-            for c in report["checks"]:
-                for step in ([WHOLE_FRAME] if c["steps"] == every else c["steps"]):
-                    verdict[step] = verdict.get(step, True) and c["passed"]
-            wrong = [t[0] for t in tests if t[0] in verdict and t[3] != verdict[t[0]]]
-            if wrong:
-                errors.append(f"{name}: the pass/fail of steps {wrong} disagrees with report.json's checks")
+        wrong = [t[0] for t in tests if t[3] == (t[0] in failed)]
+        if wrong:
+            errors.append(f"{name}: the pass/fail of steps {wrong} disagrees with report.json's failed_steps")
         if status != "graded":
             text = {"gradescope": lambda: data["output"], "prairielearn": lambda: data["output"],
                     "classroom": lambda: data["tests"][0]["message"]}[fmt]()
