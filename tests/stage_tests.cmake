@@ -100,7 +100,7 @@ t10_add_layer_mutant("a header that includes a test's header" content/include/t1
 t10_add_layer_mutant("content that includes the frame layer" content/src/scene.cpp
                      "#include \"t10/app.hpp\"" "scene.cpp:1: includes \"t10/app.hpp\" of frame, a layer content may not include")
 t10_add_layer_mutant("platform that includes content" platform/src/context.cpp
-                     "#include \"t10/image.hpp\"" "context.cpp:1: includes \"t10/image.hpp\" of content")
+                     "#include \"t10/tga.hpp\"" "context.cpp:1: includes \"t10/tga.hpp\" of content")
 t10_add_layer_mutant("stage.hpp that includes the command line" frame/include/t10/stage.hpp
                      "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(stage.hpp may include only")
 t10_add_layer_mutant("two files that need each other" frame/src/view_catalogue.cpp
