@@ -94,7 +94,14 @@ void writeReportJson(const Report& report, const std::string& path) {
     out << "{\n  \"submission\": " << jsonString(report.submission) << ",\n  \"path\": " << jsonString(report.path)
         << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonString(report.status)
         << ",\n  \"score\": " << report.score() << ",\n  \"message\": " << jsonString(report.message)
-        << ",\n  \"seconds\": " << report.seconds << ",\n  \"checks\": [";
+        << ",\n  \"seconds\": " << report.seconds << ",\n  \"isolation\": " << jsonString(report.isolation)
+        << ",\n  \"fill_from_reference\": " << jsonString(report.fill) << ",\n  \"files\": [";
+    for (std::size_t i = 0; i < report.files.size(); ++i) {
+        const SubmissionFile& f = report.files[i];
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonString(f.name) << ", \"source\": " << jsonString(f.source)
+            << ", \"reason\": " << jsonString(f.reason) << ", \"bytes\": " << f.bytes << "}";
+    }
+    out << "\n  ],\n  \"checks\": [";
     for (std::size_t i = 0; i < report.checks.size(); ++i) {
         const Check& c = report.checks[i];
         out << (i ? "," : "") << "\n    {\"id\": " << jsonString(c.id) << ", \"steps\": [" << stepList(c.steps)
@@ -122,6 +129,16 @@ void writeReportHtml(const Report& report, const std::string& path) {
         << " of " << report.checks.size() << " checks passed; the score is the share of checks passed, rounded "
         << "down).</p>\n";
     if (!report.message.empty()) out << "<pre>" << html(report.message) << "</pre>\n";
+    out << "<p>Isolation: " << html(report.isolation) << (report.isolation == "none" ? " (run with --no-sandbox: unsafe)" : "")
+        << ". Missing files taken from the reference: " << html(report.fill) << ".</p>\n";
+    if (!report.files.empty()) {
+        out << "<table><tr><th>file</th><th>graded from</th><th>why</th></tr>\n";
+        for (const SubmissionFile& f : report.files) {
+            out << "<tr" << (f.source == "ignored" || f.source == "missing" ? " class=\"fail\"" : "") << "><td>"
+                << html(f.name) << "</td><td>" << html(f.source) << "</td><td>" << html(f.reason) << "</td></tr>\n";
+        }
+        out << "</table>\n";
+    }
     if (!report.checks.empty()) {
         out << "<table><tr><th>check</th><th>steps</th><th>result</th><th>measured</th><th>tolerance</th>"
             << "<th>diagnosis</th></tr>\n";
@@ -146,13 +163,14 @@ void writeReportHtml(const Report& report, const std::string& path) {
 
 void writeGradebook(const std::vector<Report>& reports, const std::string& path) {
     std::ostringstream out;
-    out << "submission,part,status,score,passed,total,failed_checks\n";
+    out << "submission,part,status,score,passed,total,failed_checks,isolation,fill_from_reference\n";
     for (const Report& r : reports) {
         std::string failed;
         for (const Check& c : r.checks)
             if (!c.passed) failed += (failed.empty() ? "" : " ") + c.id;
         out << csvField(r.submission) << "," << r.part << "," << r.status << "," << r.score() << ","
-            << r.passedCount() << "," << r.checks.size() << "," << csvField(failed) << "\n";
+            << r.passedCount() << "," << r.checks.size() << "," << csvField(failed) << "," << r.isolation << ","
+            << r.fill << "\n";
     }
     writeAtomically(path, out.str());
 }

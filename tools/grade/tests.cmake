@@ -33,7 +33,7 @@ foreach(part 1 2 3)
         list(APPEND folders ${GRADE_SUBMISSIONS}/part${part}/${name})
     endforeach()
     add_test(NAME "grade: part ${part} batch with --jobs 2"
-             COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/part${part} ${folders})
+             COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/part${part} ${folders})
     # COST: ctest starts the long batches first, beside the many short tests.
     set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES COST 1000
                          FIXTURES_SETUP grade_part${part} FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
@@ -48,7 +48,7 @@ endforeach()
 set(single_gradebooks "")
 foreach(name weight viewport_reset no_compile)
     add_test(NAME "grade: ${name} alone"
-             COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/alone-${name}
+             COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/alone-${name}
                      ${GRADE_SUBMISSIONS}/part3/${name})
     set_tests_properties("grade: ${name} alone" PROPERTIES
                          FIXTURES_SETUP grade_alone FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
