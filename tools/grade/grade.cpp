@@ -400,6 +400,41 @@ void makeDir(const fs::path& dir, uid_t owner, mode_t mode) {
     if (owner != 0 && ::chown(dir.c_str(), owner, owner) != 0) throw Error(dir.string() + ": chown: " + std::strerror(errno));
 }
 
+// Copies a file the grader owns. Its descriptors are close-on-exec: a descriptor open for writing
+// inherited by a process forked meanwhile by another job would make exec() of the copy fail with
+// "Text file busy" (std::filesystem::copy_file does not set O_CLOEXEC).
+void copyFile(const fs::path& from, const fs::path& to, mode_t mode, uid_t owner = 0) {
+    const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (in < 0) throw Error(from.string() + ": cannot open: " + std::strerror(errno));
+    const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+    if (out < 0) {
+        const int error = errno;
+        ::close(in);
+        throw Error(to.string() + ": cannot create: " + std::strerror(error));
+    }
+    char buffer[65536];
+    bool ok = true;
+    for (ssize_t n; ok && (n = ::read(in, buffer, sizeof buffer)) != 0;) {
+        ok = n > 0 && ::write(out, buffer, static_cast<std::size_t>(n)) == n;
+    }
+    const int error = errno;
+    if (ok && owner != 0 && ::fchown(out, owner, owner) != 0) ok = false;
+    ::fchmod(out, mode);
+    ::close(in);
+    ::close(out);
+    if (!ok) throw Error(to.string() + ": cannot copy from " + from.string() + ": " + std::strerror(error));
+}
+
+// Copies a folder of regular files (the grader's own: the Mesa shader cache seed), owned by `owner`.
+void copyTree(const fs::path& from, const fs::path& to, uid_t owner) {
+    makeDir(to, owner, 0700);
+    for (const auto& entry : fs::directory_iterator(from)) {
+        const fs::file_status status = entry.symlink_status();
+        if (fs::is_directory(status)) copyTree(entry.path(), to / entry.path().filename(), owner);
+        else if (fs::is_regular_file(status)) copyFile(entry.path(), to / entry.path().filename(), 0600, owner);
+    }
+}
+
 // What a render left in its output folder, examined after every process of it is dead: "" when it is
 // regular files and folders within the caps, else what is wrong (the submission's fault).
 constexpr int kMaxOutputFiles = 512;
@@ -609,7 +644,7 @@ void Grader::prepareInputs() {
 void Grader::prepareReference() {
     // The reference renders are kept until the reference program or its shaders change, and used only
     // while their recorded hashes hold; the reference is trusted code and renders outside the sandbox.
-    std::string stamp = referenceBinary_;
+    std::string stamp = referenceBinary_ + " with a Mesa cache seed";
     stamp += std::to_string(fs::last_write_time(referenceBinary_).time_since_epoch().count());
     for (const std::string& shader : info_.shaders) stamp += readFile(referenceStageDir() + "/" + shader);
     referenceDir_ = (fs::absolute(config_.cacheDir) / ("reference-" + std::string(info_.stage) + "-" + hashOf(stamp))).string();
@@ -625,7 +660,9 @@ void Grader::prepareReference() {
         std::vector<std::string> argv{referenceBinary_, "--headless", "--backend", "egl", "--frames", "1"};
         for (const std::string& a : caseArgs(spec, inputsDir_)) argv.push_back(a);
         argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
-        const RunResult result = runLimited(argv, Limits{}, out + "/run.log");
+        // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
+        // are the reference's, and compiling them again costs more than the render.
+        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", {"MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed"});
         if (!result.ok()) throw Error("the reference " + std::string(info_.stage) + " (" + spec.id + ") " + result.describe() + ":\n" + result.output);
     }
     writeManifest(temporary);
@@ -697,8 +734,7 @@ std::string Grader::build(const std::string& source, int job, const fs::path& wo
     // Published by the grader: the program, its log, the command, and their hashes.
     const fs::path temporary = dir.string() + uniqueSuffix();
     fs::create_directories(temporary);
-    fs::copy_file(built, temporary / "student");
-    fs::permissions(temporary / "student", fs::perms::owner_all, fs::perm_options::replace);
+    copyFile(built, temporary / "student", 0700);
     std::ofstream(temporary / "build.log") << log;
     {
         // The command, so that an instructor can see how it was built (paths as inside the sandbox).
@@ -833,11 +869,14 @@ Report Grader::grade(const std::string& submission, int job) const {
     }
     // The job's copy of the program: the cache is not readable by its uid.
     const fs::path program = work / "student";
-    fs::copy_file(built, program);
-    fs::permissions(program, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec, fs::perm_options::replace);
+    copyFile(built, program, 0750);
     if (base.uid != 0 && ::chown(program.c_str(), 0, base.uid) != 0) throw Error(program.string() + ": chown: " + std::strerror(errno));
+    // Its own Mesa shader cache, started from the grader's seed (the reference's shaders, compiled
+    // when the reference rendered): what it writes there reaches no other submission.
     const fs::path mesa = work / "mesa-cache";
-    makeDir(mesa, base.uid, 0700);
+    const fs::path seed = fs::path(referenceDir_) / "mesa-seed";
+    if (fs::is_directory(fs::symlink_status(seed))) copyTree(seed, mesa, base.uid);
+    else makeDir(mesa, base.uid, 0700);
     const fs::path tmp = work / "tmp";
     makeDir(tmp, base.uid, 0700);
 

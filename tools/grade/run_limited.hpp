@@ -25,7 +25,8 @@ struct RunResult {
 };
 
 // Runs argv[0] with argv (PATH is searched); throws t10::Error if the process cannot be started.
+// `environment` ("NAME=value") is added to the grader's own.
 RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits, const std::string& logFile,
-                     const std::string& workingDirectory = "");
+                     const std::string& workingDirectory = "", const std::vector<std::string>& environment = {});
 
 } // namespace t10::grade

@@ -71,7 +71,15 @@ CopiedSubmission copySubmission(const std::string& submission, const PartFiles& 
                                 FillPolicy policy, const std::string& destination) {
     CopiedSubmission copied;
     if (::mkdir(destination.c_str(), 0755) != 0) throw Error(destination + ": cannot create: " + std::strerror(errno));
-    const int folder = ::open(submission.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    // The folder itself is not followed either: a submission that is a link to another folder (the
+    // reference stage, another student's) has no files of its own.
+    std::string path = submission;
+    while (path.size() > 1 && path.back() == '/') path.pop_back();
+    const int folder = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (folder < 0 && (errno == ELOOP || errno == ENOTDIR)) {
+        copied.files.push_back({".", "ignored", "the submission folder is a symlink (never followed)", 0});
+        return copied;
+    }
     if (folder < 0) throw Error(submission + ": cannot open the submission folder: " + std::strerror(errno));
     DIR* dir = ::fdopendir(folder);
     if (dir == nullptr) {
