@@ -602,6 +602,13 @@ void Grader::chooseIsolation() {
                         "Refusing to run student code; --no-sandbox runs it unprotected (unsafe)");
         }
     }
+    std::cerr << "t10-grade: student code runs with isolation " << isolationName(isolation_);
+    if (!jobUids_.empty()) {
+        std::cerr << " (job uids";
+        for (std::size_t i = 0; i < jobUids_.size(); ++i) std::cerr << (i ? "," : " ") << jobUids_[i];
+        std::cerr << ")";
+    }
+    std::cerr << "\n";
     if (isolation_ == Isolation::Uid) {
         struct stat info {};
         if (::stat(referenceStageDir().c_str(), &info) == 0 && (info.st_mode & S_IROTH)) {

@@ -92,3 +92,14 @@ foreach(case "flip;FAIL  rgb24_raw_bl: wrong orientation" "swap;FAIL  rgb24_raw_
 endforeach()
 add_test(NAME "grade tga: usage without {in} {out}"
          COMMAND ${EXPECT} 2 "must contain \\{in\\} and \\{out\\}" -- ${GRADE_TGA} "tga2png")
+
+# --- Hostile submissions (issue 19): each attack on the grader is contained, honest submissions
+# graded beside them keep 100. Under namespaces where bwrap works, and under the uid fallback where
+# the tests run as root; each skips (77) saying why elsewhere. One at a time: they count processes.
+foreach(isolation namespaces uid)
+    add_test(NAME "grade: hostile submissions are contained (${isolation})"
+             COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/hostile/hostile.py ${isolation} ${PROJECT_SOURCE_DIR}
+                     ${PROJECT_BINARY_DIR}/bin/t10-grade ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/hostile-${isolation})
+    set_tests_properties("grade: hostile submissions are contained (${isolation})" PROPERTIES
+                         SKIP_RETURN_CODE 77 RESOURCE_LOCK grade_hostile COST 900 TIMEOUT 600)
+endforeach()
