@@ -67,6 +67,8 @@ foreach(case
         "2;/nonexistent-submission: not a folder;--part;1;/nonexistent-submission"
         "2;--jobs 0: expected a number from 1 to 64;--part;1;--jobs;0;${GRADE_SUBMISSIONS}"
         "2;unknown option --bogus;--part;1;--bogus"
+        "2;--isolation bogus: choose auto, namespaces or uid;--part;1;--isolation;bogus;${GRADE_SUBMISSIONS}"
+        "2;--fill-from-reference some: choose unchanged, all or none;--part;1;--fill-from-reference;some;${GRADE_SUBMISSIONS}"
         "2;would overwrite the submission;--part;1;--report;${PROJECT_SOURCE_DIR};${PROJECT_SOURCE_DIR}/tutorial10_part1_tonemap")
     list(POP_FRONT case code regex)
     string(REPLACE ";" " " label "${case}")
@@ -92,6 +94,13 @@ foreach(case "flip;FAIL  rgb24_raw_bl: wrong orientation" "swap;FAIL  rgb24_raw_
 endforeach()
 add_test(NAME "grade tga: usage without {in} {out}"
          COMMAND ${EXPECT} 2 "must contain \\{in\\} and \\{out\\}" -- ${GRADE_TGA} "tga2png")
+
+# The copy-in: empty, README-only, wrong-case and odd files get their status and file list.
+add_test(NAME "grade: submission files listed, empty and incomplete submissions get their status"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/inputs_check.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade
+                 ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/inputs)
+set_tests_properties("grade: submission files listed, empty and incomplete submissions get their status" PROPERTIES
+                     SKIP_RETURN_CODE 77)
 
 # --- Hostile submissions (issue 19): each attack on the grader is contained, honest submissions
 # graded beside them keep 100. Under namespaces where bwrap works, and under the uid fallback where
