@@ -151,6 +151,7 @@ def png64():
 
 
 PNG = ",".join(str(b) for b in png64())
+HOST_TMP_FILE = f"/tmp/t10-hostile-{TOKEN}"
 REPORT_OF = lambda name: os.path.join(REPORTS, name, "report.json")
 
 # name: (host code: (constructor body, code after the stage's run), PostProcess.frag, description)
@@ -176,7 +177,7 @@ ATTACKS = {
         hostile::tryWrite({cstr(os.path.join(CWD, 'pwned-cwd'))}, "x");
         hostile::tryWrite({cstr(os.path.join(CACHE, 'pwned-cache'))}, "x");
         hostile::tryWrite({cstr(REPORT_OF('honest_first'))}, "{{}}");
-        hostile::tryWrite("/tmp/pwned-tmp", "x");"""), None, REF_FRAG,
+        hostile::tryWrite({cstr(HOST_TMP_FILE)}, "x");"""), None, REF_FRAG,
         "writes into the grader's working folder, the cache, another submission's report.json and /tmp"),
     "network": (ctor(f"""
         const int s = ::socket(AF_INET, SOCK_STREAM, 0);
@@ -379,10 +380,14 @@ expect("include_secret", reports["include_secret"]["status"] == "build-failed", 
 
 # The host's /tmp is writable by any uid: the fallback cannot keep a submission out of it.
 for path in (os.path.join(CWD, "pwned-relative"), os.path.join(CWD, "pwned-cwd"), os.path.join(CACHE, "pwned-cache"),
-             os.path.join(CWD, "daemon-alive")) + (("/tmp/pwned-tmp",) if MODE == "namespaces" else ()):
+             os.path.join(CWD, "daemon-alive")) + ((HOST_TMP_FILE,) if MODE == "namespaces" else ()):
     if os.path.exists(path):
         fail(f"a submission wrote {path}")
-print("ok   nothing written in the working folder, the cache or /tmp")
+        break
+else:
+    print("ok   nothing written in the working folder, the cache" + (" or /tmp" if MODE == "namespaces" else ""))
+if os.path.exists(HOST_TMP_FILE):
+    os.remove(HOST_TMP_FILE)
 expect("write_outside", "WROTE:" + REPORT_OF("honest_first") not in log_of("write_outside"), "another report not written")
 
 if MODE == "namespaces":
