@@ -3,8 +3,8 @@
 Part 1 reference with one attack added), grades them beside honest copies of the reference with
 t10-grade under the isolation asked for, then checks that every attack was contained.
 
-usage: hostile.py namespaces|uid|none SOURCE_DIR T10_GRADE FLIP OUT_DIR
-(none: grades with --no-sandbox, to show that the checks fail without a sandbox; not run by make test)
+usage: hostile.py namespaces|uid SOURCE_DIR T10_GRADE FLIP OUT_DIR
+(Never run these submissions unsandboxed as root: one of them sends kill(-1, SIGKILL).)
 Exit 0 when every expectation holds, 1 with the failures listed, 77 (skipped) where the isolation
 cannot be had on this machine (no working bwrap; not root for uid) or FLIP is not installed.
 
@@ -309,7 +309,9 @@ write_submission("honest_last", REF_HOST, REF_FRAG)
 order.append("honest_last")
 
 env = dict(os.environ, T10_HOSTILE_SECRET=ENV_SECRET)
-ISOLATE = ["--no-sandbox"] if MODE == "none" else ["--isolation", MODE]
+if MODE not in ("namespaces", "uid"):
+    sys.exit(f"hostile.py: {MODE}: choose namespaces or uid")
+ISOLATE = ["--isolation", MODE]
 command = [GRADER, "--part", "1", "--jobs", "2", "--timeout", "15"] + ISOLATE + ["--cache", CACHE,
            "--report", REPORTS] + [os.path.join(SUBS, n) for n in order]
 start = time.time()
