@@ -848,6 +848,17 @@ Report Grader::grade(const std::string& submission, int job) const {
     };
 
     const fs::path shaders = work / "submission";
+    // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
+    // the report names them after the submission folder instead, as the student knows them.
+    auto studentPaths = [&](std::string text) {
+        for (const std::string& prefix : {std::string("/submission/"), shaders.string() + "/", (work / "nan-probe-shaders").string() + "/"}) {
+            for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
+                text.replace(at, prefix.size(), report.submission + "/");
+                at += report.submission.size() + 1;
+            }
+        }
+        return text;
+    };
     const CopiedSubmission copied = copySubmission(fs::absolute(submission).string(), files_, referenceStageDir(),
                                                    config_.fill, shaders.string());
     report.files = copied.files;
@@ -868,10 +879,10 @@ Report Grader::grade(const std::string& submission, int job) const {
 
     std::string log;
     const std::string built = build((shaders / "Tutorial10.cpp").string(), job, work, log);
-    std::ofstream(out / "build.log") << log;
+    std::ofstream(out / "build.log") << studentPaths(log);
     if (built.empty()) {
         report.status = "build-failed";
-        report.message = "Tutorial10.cpp does not build against common/:\n" + tail(log, 40);
+        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40));
         return finish(report);
     }
     // The job's copy of the program: the cache is not readable by its uid.
@@ -930,7 +941,7 @@ Report Grader::grade(const std::string& submission, int job) const {
             report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
                              (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
                              (result.signal == SIGXFSZ ? " (a file over the size limit)" : "") +
-                             ". Its last output:\n" + tail(o, 30);
+                             ". Its last output:\n" + studentPaths(tail(o, 30));
             return finish(report);
         }
         // Its outputs, as hostile files: every process of the run is dead, so they cannot change now.
