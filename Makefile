@@ -7,10 +7,10 @@ OUT      := out
 STAGES    = $(shell cat $(BUILD)/stages.txt 2>/dev/null)
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
-# Debian 12 packages the build, the tests and the headless renders need.
+# Debian 12 packages the build, the tests and the headless renders need (bubblewrap: the grader's sandbox).
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
             libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev xvfb xauth \
-            jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+            jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core bubblewrap
 
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 

@@ -1,8 +1,11 @@
 // t10-grade: grades students' versions of a Tutorial 10 stage.
 //   t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout S] [--cache DIR] [--format F]...
-//             [--name-from N|PATTERN] [--roster CSV] SUBMISSION...
-// A submission is a folder with any of Tutorial10.cpp and the part's shaders; what it lacks comes
-// from the reference stage. Its host code is built against common/ in a build folder of its own,
+//             [--name-from N|PATTERN] [--roster CSV] [--fill-from-reference P] [--isolation I] SUBMISSION...
+// A submission is a folder with any of Tutorial10.cpp and the part's shaders. It is copied first, as
+// hostile input, into a private folder (submission_files.hpp), where the reference files the
+// instructor lets come from the reference are added. Every step the student controls (the compiler,
+// each render) runs in a sandbox (sandbox.hpp); its outputs are read afterwards as hostile files.
+// Its host code is built against common/ in a build folder of its own,
 // then it renders four cases under limits (a power-of-two size with one camera, a
 // non-power-of-two size with another, and two synthetic inputs: black pixels next to pixels far
 // above the white point, and one hot pixel), and checks.hpp compares every buffer with the CPU
@@ -16,12 +19,15 @@
 #include "formats.hpp"
 #include "report.hpp"
 #include "run_limited.hpp"
+#include "sandbox.hpp"
+#include "submission_files.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -30,10 +36,14 @@
 #include <iostream>
 #include <map>
 #include <mutex>
-#include <regex>
+#include <regex> // --name-from patterns only (the instructor's pattern over a path); never over student text
 #include <set>
 #include <sstream>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <thread>
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -56,23 +66,35 @@ PartInfo partInfo(int part) {
     }
 }
 
+// The files of a part, and those its steps ask the student to change (the stage diffs: Part 3 leaves
+// PostProcess.frag and PostProcessInit.frag as Part 2 has them).
+PartFiles partFiles(int part) {
+    PartFiles files{{"Tutorial10.cpp"}, {"Tutorial10.cpp"}};
+    for (const std::string& shader : partInfo(part).shaders) files.expected.push_back(shader);
+    if (part == 3) files.asked.push_back("Gauss.frag");
+    else files.asked.insert(files.asked.end(), {"PostProcess.frag", "PostProcessInit.frag"});
+    return files;
+}
+
 struct CaseSpec {
     std::string id;
     std::string description;
     bool camera;
     std::vector<std::string> args; // "{inputs}" is replaced by the synthetic inputs' folder
+    int width;                     // of the frame the case must write
+    int height;
 };
 
 // Small sizes keep a submission to a few seconds on a CPU renderer; 160x90 halves to 80x45 and its
 // luminance chain passes odd sizes (45, 5), unlike 128x128.
 std::vector<CaseSpec> cases(int part) {
     std::vector<CaseSpec> list{
-        {"pot", "128x128 (power of two), camera default", true, {"--size", "128x128", "--camera", "default"}},
-        {"npot", "160x90 (not a power of two), camera lights", true, {"--size", "160x90", "--camera", "lights"}},
+        {"pot", "128x128 (power of two), camera default", true, {"--size", "128x128", "--camera", "default"}, 128, 128},
+        {"npot", "160x90 (not a power of two), camera lights", true, {"--size", "160x90", "--camera", "lights"}, 160, 90},
         {"extremes", "64x64 input: black pixels, and every pixel a different luminance from 0.001 to 50", false,
-         {"--input", "{inputs}/ramp.exr"}},
+         {"--input", "{inputs}/ramp.exr"}, 64, 64},
     };
-    if (part >= 2) list.push_back({"hot", "128x128 input: one hot 2x2 block on grey", false, {"--input", "{inputs}/hot.exr"}});
+    if (part >= 2) list.push_back({"hot", "128x128 input: one hot 2x2 block on grey", false, {"--input", "{inputs}/hot.exr"}, 128, 128});
     return list;
 }
 
@@ -82,6 +104,8 @@ struct Config {
     int jobs = 1;
     double timeout = 60.0;
     std::string cacheDir = T10_GRADE_CACHE_DIR;
+    std::string isolation = "auto"; // auto | namespaces | uid | none (--no-sandbox)
+    FillPolicy fill = FillPolicy::Unchanged;
     std::vector<std::string> submissions;
     std::vector<std::string> formats;  // platform results (formats.hpp)
     std::string nameFrom;              // how a submission is named: "" (its last folder), a component index or a pattern
@@ -91,9 +115,11 @@ struct Config {
 };
 
 constexpr const char* kUsage =
-    "usage: t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout SECONDS] [--cache DIR] [--format F]... [--name-from N|PATTERN]\n"
-    "                 [--roster CSV] SUBMISSION...\n"
-    "  SUBMISSION  a folder with any of Tutorial10.cpp and the part's shaders (the rest comes from the reference)\n"
+    "usage: t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout SECONDS] [--cache DIR] [--format F]...\n"
+    "                 [--name-from N|PATTERN] [--roster CSV] [--fill-from-reference unchanged|all|none]\n"
+    "                 [--isolation auto|namespaces|uid] [--no-sandbox] SUBMISSION...\n"
+    "  SUBMISSION  a folder with any of Tutorial10.cpp and the part's shaders; only regular files with the\n"
+    "              part's names are taken (no symlinks, 256 KiB each); the report lists every file\n"
     "  --report    where report.json/report.html per submission and gradebook.csv go (default grade-report)\n"
     "  --jobs      submissions graded in parallel (default 1)\n"
     "  --timeout   wall-clock limit of one render, in seconds (default 60); builds get 300\n"
@@ -104,7 +130,21 @@ constexpr const char* kUsage =
     "              folder; -1, the default, is the last), or a regular expression whose first group (or whole\n"
     "              match) is the name, e.g. --name-from '([^/]+)/student'\n"
     "  --roster    a CSV (columns folder or github_username, student_id or identifier, optional name): names\n"
-    "              each submission by the student id of its name; writes index.html and grades-lms.csv by id\n";
+    "              each submission by the student id of its name; writes index.html and grades-lms.csv by id\n"
+    "  --fill-from-reference  which missing files come from the reference stage: unchanged (default: the\n"
+    "              files the part does not ask the student to change), all, or none\n"
+    "  --isolation how student code is contained (default auto: namespaces, else uid):\n"
+    "              namespaces  bubblewrap (bwrap): no network, no environment, a fixed read-only view of the\n"
+    "                          system and the project, one writable output folder, a small /tmp, killed\n"
+    "                          with its pid namespace; as root it also runs as an unprivileged uid per job\n"
+    "              uid         where user namespaces are not allowed (the grader must run as root): an\n"
+    "                          unprivileged uid per job with the same limits; it still sees every file that\n"
+    "                          is readable by others (the cache is made 0700), and the network\n"
+    "  --no-sandbox  UNSAFE: runs student code as the grader's own user, with only time and size limits;\n"
+    "              for trusted code on a machine with neither isolation. The report says so.\n"
+    "  A submission can read only its own files, the project's public headers, libraries, shaders and\n"
+    "  assets, and its run's inputs; write only its output folder and a small /tmp; it has no network\n"
+    "  (namespaces), cannot outlive its run, touch other submissions or the cache, or stop the grader.\n";
 
 std::string submissionName(const std::string& path) {
     fs::path p = fs::path(path).lexically_normal();
@@ -184,6 +224,18 @@ Config parse(int argc, char** argv) {
             config.nameFrom = value();
         } else if (arg == "--roster") {
             config.roster = value();
+        } else if (arg == "--isolation") {
+            const std::string v = value();
+            if (v != "auto" && v != "namespaces" && v != "uid") throw UsageError("--isolation " + v + ": choose auto, namespaces or uid");
+            if (config.isolation != "none") config.isolation = v;
+        } else if (arg == "--no-sandbox") {
+            config.isolation = "none";
+        } else if (arg == "--fill-from-reference") {
+            const std::string v = value();
+            if (v == "unchanged") config.fill = FillPolicy::Unchanged;
+            else if (v == "all") config.fill = FillPolicy::All;
+            else if (v == "none") config.fill = FillPolicy::None;
+            else throw UsageError("--fill-from-reference " + v + ": choose unchanged, all or none");
         } else if (arg.rfind("--", 0) == 0) {
             throw UsageError("unknown option " + arg);
         } else {
@@ -243,27 +295,81 @@ std::string tail(const std::string& text, std::size_t lines) {
     return text.substr(pos + 1);
 }
 
+// A linear scan of shader text (no backtracking regex over student input): the position of `words`
+// at or after `from`, where each word is a whole identifier or one punctuation character, separated
+// by optional whitespace; a word of "*" is any identifier (its text is put in `captured`).
+bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::size_t findTokens(const std::string& text, const std::vector<std::string>& words, std::size_t& end,
+                       std::vector<std::string>& captured) {
+    for (std::size_t start = 0; start < text.size(); ++start) {
+        if (start > 0 && isWordChar(text[start - 1])) continue;
+        std::size_t at = start;
+        captured.clear();
+        bool matched = true;
+        for (std::size_t w = 0; w < words.size() && matched; ++w) {
+            if (w > 0) {
+                while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+            }
+            const std::string& word = words[w];
+            if (word == "*") {
+                const std::size_t first = at;
+                while (at < text.size() && isWordChar(text[at])) ++at;
+                matched = at > first;
+                if (matched) captured.push_back(text.substr(first, at - first));
+            } else if (text.compare(at, word.size(), word) == 0) {
+                at += word.size();
+                matched = !isWordChar(word.back()) || at >= text.size() || !isWordChar(text[at]);
+            } else {
+                matched = false;
+            }
+            // Whitespace is skipped once per word and a failed attempt stops at the first mismatch, so
+            // a start position costs at most the whitespace after it: linear in the text overall.
+        }
+        if (matched) {
+            end = at;
+            return start;
+        }
+    }
+    return std::string::npos;
+}
+
 // The NaN probe: a copy of the submission's shaders whose PostProcess.frag paints every NaN output
 // magenta. GL leaves the 8-bit conversion of NaN to the driver and Mesa writes 0, so without the probe
 // a tone map that divides 0 by 0 on black pixels renders exactly like a guarded one. Returns "" when
 // the shader's main() or its vec3/vec4 output cannot be found (the case then runs unprobed).
-std::string writeNanProbe(const std::string& submissionDir, const std::string& referenceDir, const std::string& probeDir) {
+// `shaderDir` is the private copy, complete (the sources are size-capped by the copy-in).
+std::string writeNanProbe(const std::string& shaderDir, const std::string& probeDir) {
     fs::create_directories(probeDir);
-    for (const auto& entry : fs::directory_iterator(submissionDir)) {
+    for (const auto& entry : fs::directory_iterator(shaderDir)) {
         if (entry.is_regular_file()) fs::copy_file(entry.path(), fs::path(probeDir) / entry.path().filename(), fs::copy_options::overwrite_existing);
     }
-    const fs::path own = fs::path(submissionDir) / "PostProcess.frag";
-    const std::string source = readFile(fs::exists(own) ? own.string() : referenceDir + "/PostProcess.frag");
-    const std::regex mainPattern(R"(\bvoid\s+main\s*\(\s*(void)?\s*\))");
-    const std::regex outPattern(R"(\bout\s+(vec3|vec4)\s+(\w+)\s*;)");
-    std::smatch output;
-    if (!std::regex_search(source, mainPattern) || !std::regex_search(source, output, outPattern)) return "";
-    const std::string magenta = output[1] == "vec3" ? "vec3(1.0, 0.0, 1.0)" : "vec4(1.0, 0.0, 1.0, 1.0)";
-    std::ofstream(fs::path(probeDir) / "PostProcess.frag")
-        << std::regex_replace(source, mainPattern, "void t10gradeStudentMain()")
-        << "\n// Added by t10-grade: NaN outputs are painted magenta so that the 8-bit frame shows them.\n"
-        << "void main() {\n    t10gradeStudentMain();\n    if (any(isnan(" << output[2].str() << "))) " << output[2].str()
-        << " = " << magenta << ";\n}\n";
+    const fs::path own = fs::path(shaderDir) / "PostProcess.frag";
+    if (!fs::exists(own)) return "";
+    const std::string source = readFile(own.string());
+    std::size_t mainEnd = 0, outEnd = 0;
+    std::vector<std::string> unused, output;
+    std::size_t mainAt = findTokens(source, {"void", "main", "(", ")"}, mainEnd, unused);
+    if (mainAt == std::string::npos) mainAt = findTokens(source, {"void", "main", "(", "void", ")"}, mainEnd, unused);
+    // The first vec3 or vec4 output, whichever comes first.
+    std::size_t outAt = findTokens(source, {"out", "vec3", "*", ";"}, outEnd, output);
+    std::string type = "vec3";
+    std::vector<std::string> output4;
+    const std::size_t out4At = findTokens(source, {"out", "vec4", "*", ";"}, outEnd, output4);
+    if (out4At < outAt) {
+        outAt = out4At;
+        output = output4;
+        type = "vec4";
+    }
+    if (mainAt == std::string::npos || outAt == std::string::npos) return "";
+    const std::string name = output[0];
+    const std::string magenta = type == "vec3" ? "vec3(1.0, 0.0, 1.0)" : "vec4(1.0, 0.0, 1.0, 1.0)";
+    const fs::path probe = fs::path(probeDir) / "PostProcess.frag";
+    fs::remove(probe);
+    std::ofstream(probe) << source.substr(0, mainAt) << "void t10gradeStudentMain()" << source.substr(mainEnd)
+                         << "\n// Added by t10-grade: NaN outputs are painted magenta so that the 8-bit frame shows them.\n"
+                         << "void main() {\n    t10gradeStudentMain();\n    if (any(isnan(" << name << "))) " << name
+                         << " = " << magenta << ";\n}\n";
     return probeDir;
 }
 
@@ -325,103 +431,340 @@ HostKit loadHostKit() {
     return kit;
 }
 
+
+// The FNV-1a of a file's contents, read without following a symlink; "" when it cannot be read.
+std::string fileHash(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) return "";
+    std::string data;
+    char buffer[65536];
+    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) data.append(buffer, static_cast<std::size_t>(n));
+    ::close(fd);
+    return hashOf(data);
+}
+
+// A cached folder carries the hash of every file in it, recorded when the grader published it; it is
+// used only while its contents still match.
+constexpr const char* kManifest = "manifest.t10";
+
+std::string manifestOf(const fs::path& dir) {
+    std::vector<std::string> lines;
+    for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::file_status status = it->symlink_status();
+        const std::string relative = fs::relative(it->path(), dir).string();
+        if (relative == kManifest) continue;
+        if (fs::is_directory(status)) continue;
+        lines.push_back((fs::is_regular_file(status) ? fileHash(it->path().string()) : std::string("not-a-file")) + " " + relative);
+    }
+    std::sort(lines.begin(), lines.end());
+    std::string text;
+    for (const std::string& line : lines) text += line + "\n";
+    return text;
+}
+
+void writeManifest(const fs::path& dir) { std::ofstream(dir / kManifest) << manifestOf(dir); }
+
+bool manifestHolds(const fs::path& dir) {
+    std::error_code error;
+    if (!fs::is_regular_file(fs::symlink_status(dir / kManifest, error))) return false;
+    return readFile((dir / kManifest).string()) == manifestOf(dir);
+}
+
+// A folder of the grader's work tree: owned by the job's uid when it must write there.
+void makeDir(const fs::path& dir, uid_t owner, mode_t mode) {
+    if (::mkdir(dir.c_str(), mode) != 0 && errno != EEXIST) throw Error(dir.string() + ": cannot create: " + std::strerror(errno));
+    if (::chmod(dir.c_str(), mode) != 0) throw Error(dir.string() + ": chmod: " + std::strerror(errno));
+    if (owner != 0 && ::chown(dir.c_str(), owner, owner) != 0) throw Error(dir.string() + ": chown: " + std::strerror(errno));
+}
+
+// Copies a file the grader owns. Its descriptors are close-on-exec: a descriptor open for writing
+// inherited by a process forked meanwhile by another job would make exec() of the copy fail with
+// "Text file busy" (std::filesystem::copy_file does not set O_CLOEXEC).
+void copyFile(const fs::path& from, const fs::path& to, mode_t mode, uid_t owner = 0) {
+    const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (in < 0) throw Error(from.string() + ": cannot open: " + std::strerror(errno));
+    const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
+    if (out < 0) {
+        const int error = errno;
+        ::close(in);
+        throw Error(to.string() + ": cannot create: " + std::strerror(error));
+    }
+    char buffer[65536];
+    bool ok = true;
+    for (ssize_t n; ok && (n = ::read(in, buffer, sizeof buffer)) != 0;) {
+        ok = n > 0 && ::write(out, buffer, static_cast<std::size_t>(n)) == n;
+    }
+    const int error = errno;
+    if (ok && owner != 0 && ::fchown(out, owner, owner) != 0) ok = false;
+    ::fchmod(out, mode);
+    ::close(in);
+    ::close(out);
+    if (!ok) throw Error(to.string() + ": cannot copy from " + from.string() + ": " + std::strerror(error));
+}
+
+// Copies a folder of regular files (the grader's own: the Mesa shader cache seed), owned by `owner`.
+void copyTree(const fs::path& from, const fs::path& to, uid_t owner) {
+    makeDir(to, owner, 0700);
+    for (const auto& entry : fs::directory_iterator(from)) {
+        const fs::file_status status = entry.symlink_status();
+        if (fs::is_directory(status)) copyTree(entry.path(), to / entry.path().filename(), owner);
+        else if (fs::is_regular_file(status)) copyFile(entry.path(), to / entry.path().filename(), 0600, owner);
+    }
+}
+
+// What a render left in its output folder, examined after every process of it is dead: "" when it is
+// regular files and folders within the caps, else what is wrong (the submission's fault).
+constexpr int kMaxOutputFiles = 512;
+constexpr std::uintmax_t kMaxOutputBytes = 64ull * 1024 * 1024;
+
+std::string checkOutputs(const fs::path& dir) {
+    int files = 0;
+    std::uintmax_t bytes = 0;
+    std::error_code error;
+    for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+        const fs::file_status status = it->symlink_status();
+        const std::string name = fs::relative(it->path(), dir).string();
+        if (fs::is_symlink(status)) return "it left a symlink in its output folder (" + name + "): outputs must be regular files";
+        if (fs::is_directory(status)) continue;
+        if (!fs::is_regular_file(status)) return "it left something that is not a regular file in its output folder (" + name + ")";
+        bytes += fs::file_size(it->path());
+        if (++files > kMaxOutputFiles) return "it wrote more than " + std::to_string(kMaxOutputFiles) + " files";
+        if (bytes > kMaxOutputBytes) return "it wrote more than " + std::to_string(kMaxOutputBytes >> 20) + " MiB";
+    }
+    if (error) return "its output folder cannot be listed: " + error.message();
+    return "";
+}
+
+// The frame's PNG header, read before any decoder or FLIP sees the file: "" when it is a PNG of the
+// expected size.
+std::string checkFrame(const std::string& path, int width, int height) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) return std::string("frame.png cannot be opened: ") + std::strerror(errno);
+    unsigned char header[24] = {};
+    const ssize_t n = ::read(fd, header, sizeof header);
+    ::close(fd);
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (n != 24 || std::memcmp(header, kSignature, 8) != 0 || std::memcmp(header + 12, "IHDR", 4) != 0) {
+        return "frame.png is not a PNG file";
+    }
+    auto big = [&](int at) { return (int(header[at]) << 24) | (int(header[at + 1]) << 16) | (int(header[at + 2]) << 8) | int(header[at + 3]); };
+    if (big(16) != width || big(20) != height) {
+        return "frame.png is " + std::to_string(big(16)) + "x" + std::to_string(big(20)) + ", the case renders " +
+               std::to_string(width) + "x" + std::to_string(height);
+    }
+    return "";
+}
 class Grader {
 public:
-    explicit Grader(Config config) : config_(std::move(config)), info_(partInfo(config_.part)), kit_(loadHostKit()) {
-        if (!fs::exists(T10_GRADE_FLIP)) {
-            throw Error(std::string(T10_GRADE_FLIP) + ": FLIP (the perceptual image metric) is not installed; run "
-                        "`make grade-deps` (a pinned flip-evaluator in a venv under build/)");
-        }
-        referenceBinary_ = std::string(T10_GRADE_BIN_DIR) + "/" + info_.stage;
-        if (!fs::exists(referenceBinary_)) throw Error(referenceBinary_ + ": the reference stage is not built");
-        fs::create_directories(config_.cacheDir);
-        fs::create_directories(config_.reportDir);
-        prepareInputs();
-        prepareReference();
-        if (config_.part == 3) {
-            // Shaders-only submissions share the reference host code built with the pass capture:
-            // built once here rather than by each of the parallel jobs.
-            std::string log;
-            if (build(referenceHost(), log).empty()) throw Error(referenceHost() + " with the pass capture does not build:\n" + log);
-        }
+    explicit Grader(Config config);
+    ~Grader() {
+        std::error_code error;
+        if (!workRoot_.empty()) fs::remove_all(workRoot_, error);
     }
+    Grader(const Grader&) = delete;
+    Grader& operator=(const Grader&) = delete;
 
-    Report grade(const std::string& submission, const std::string& name) const;
+    Report grade(const std::string& submission, const std::string& name, int job) const;
+    Isolation isolation() const { return isolation_; }
 
 private:
+    void chooseIsolation();
     void prepareInputs();
     void prepareReference();
-    std::string referenceHost() const {
-        return std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage + "/Tutorial10.cpp";
-    }
-    std::vector<std::string> caseArgs(const CaseSpec& spec) const {
+    void renderReference();
+    std::string referenceStageDir() const { return std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage; }
+    SandboxRun sandbox(int job, const SandboxLimits& limits) const;
+    std::vector<std::string> caseArgs(const CaseSpec& spec, const std::string& inputs) const {
         std::vector<std::string> args;
         for (std::string arg : spec.args) {
             const auto at = arg.find("{inputs}");
-            if (at != std::string::npos) arg.replace(at, 8, inputsDir_);
+            if (at != std::string::npos) arg.replace(at, 8, inputs);
             args.push_back(arg);
         }
         return args;
     }
-    std::vector<std::string> renderCommand(const std::string& binary, const CaseSpec& spec, const std::string& shaderDir,
-                                           const std::string& out) const {
-        std::vector<std::string> argv{binary, "--headless", "--backend", "egl", "--frames", "1"};
-        for (const std::string& a : caseArgs(spec)) argv.push_back(a);
-        if (!shaderDir.empty()) argv.insert(argv.end(), {"--shader-dir", shaderDir});
-        argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
-        return argv;
-    }
-    // Builds Tutorial10.cpp; returns the program, or "" with the compiler's message in `log`.
-    std::string build(const std::string& source, std::string& log) const;
+    // Builds Tutorial10.cpp (a host path) in the sandbox of `job`; returns the cached program (a host
+    // path only the grader can read), or "" with the compiler's message in `log`.
+    std::string build(const std::string& source, int job, const fs::path& work, std::string& log) const;
     Check flipCheck(const CaseSpec& spec, const std::string& studentFrame, const std::string& reportDir,
                     const std::vector<Check>& caseChecks) const;
 
     Config config_;
     PartInfo info_;
+    PartFiles files_;
     HostKit kit_;
     std::string referenceBinary_;
     std::string inputsDir_;
     std::string referenceDir_;
+    Isolation isolation_ = Isolation::None;
+    std::vector<uid_t> jobUids_;     // one per parallel job when root, else none
+    fs::path workRoot_;              // private copies, programs and outputs of the jobs
+    fs::path publicInputs_;          // the synthetic inputs, readable by the jobs
+    std::vector<Mount> projectMounts_; // headers, libraries, common shaders and assets, read-only
+    std::vector<std::string> includes_, libs_, defines_; // as seen inside
 };
+
+Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(config_.part)), files_(partFiles(config_.part)),
+                                kit_(loadHostKit()) {
+    if (!fs::exists(T10_GRADE_FLIP)) {
+        throw Error(std::string(T10_GRADE_FLIP) + ": FLIP (the perceptual image metric) is not installed; run "
+                    "`make grade-deps` (a pinned flip-evaluator in a venv under build/)");
+    }
+    referenceBinary_ = std::string(T10_GRADE_BIN_DIR) + "/" + info_.stage;
+    if (!fs::exists(referenceBinary_)) throw Error(referenceBinary_ + ": the reference stage is not built");
+    fs::create_directories(config_.cacheDir);
+    fs::create_directories(config_.reportDir);
+    // The cache belongs to the grader: no job uid may read or write it.
+    fs::permissions(config_.cacheDir, fs::perms::owner_all, fs::perm_options::replace);
+    chooseIsolation();
+    workRoot_ = fs::temp_directory_path() / ("t10-grade" + uniqueSuffix());
+    makeDir(workRoot_, 0, 0711); // the jobs may pass through it, not list it
+
+    // The project's public files at neutral paths (/t10/...): host paths do not show inside.
+    for (std::size_t i = 0; i < kit_.includes.size(); ++i) {
+        const std::string inside = "/t10/include/" + std::to_string(i);
+        projectMounts_.push_back({kit_.includes[i], inside, false});
+    }
+    for (std::size_t i = 0; i < kit_.libs.size(); ++i) {
+        const std::string& lib = kit_.libs[i];
+        if (lib.empty() || lib[0] != '/' || lib.rfind("/usr/", 0) == 0) continue;
+        projectMounts_.push_back({lib, "/t10/lib/" + std::to_string(i) + "-" + fs::path(lib).filename().string(), false});
+    }
+    // The common shaders and assets keep their host paths: libt10_common.a has them compiled in. They
+    // are the one place where the project's location shows inside.
+    for (const std::string& define : kit_.defines) {
+        for (const std::string name : {"T10_COMMON_SHADER_DIR=", "T10_ASSET_DIR="}) {
+            if (define.rfind(name, 0) != 0) continue;
+            const std::string path = define.substr(name.size() + 1, define.size() - name.size() - 2);
+            projectMounts_.push_back({path, path, false});
+        }
+    }
+    projectMounts_.push_back({std::string(T10_GRADE_SOURCE_DIR) + "/tools/grade/pass_capture.cpp", "/t10/grade/pass_capture.cpp", false});
+
+    prepareInputs();
+    prepareReference();
+    // The reference host code (for submissions without Tutorial10.cpp) is built once here rather than
+    // by each of the parallel jobs.
+    const fs::path work = workRoot_ / "reference-host";
+    makeDir(work, 0, 0755);
+    std::string log;
+    if (build(referenceStageDir() + "/Tutorial10.cpp", 0, work, log).empty()) {
+        throw Error("the reference " + std::string(info_.stage) + "/Tutorial10.cpp does not build in the sandbox:\n" + log);
+    }
+}
+
+void Grader::chooseIsolation() {
+    const bool root = ::geteuid() == 0;
+    const int jobs = std::max(1, std::min<int>(config_.jobs, static_cast<int>(config_.submissions.size())));
+    if (root && config_.isolation != "none") jobUids_ = pickJobUids(jobs);
+    if (config_.isolation == "none") {
+        isolation_ = Isolation::None;
+        std::cerr << "t10-grade: warning: --no-sandbox: student code runs as this user with only time and size limits\n";
+        return;
+    }
+    if (config_.isolation == "uid") {
+        if (!root) throw Error("--isolation uid: the grader must run as root to run each job as its own uid");
+        isolation_ = Isolation::Uid;
+    } else {
+        const std::string why = probeNamespaces(root ? jobUids_.front() : 0);
+        if (why.empty()) {
+            isolation_ = Isolation::Namespaces;
+        } else if (config_.isolation == "namespaces") {
+            throw Error("--isolation namespaces: bubblewrap cannot start a sandbox here: " + why);
+        } else if (root) {
+            isolation_ = Isolation::Uid;
+            std::cerr << "t10-grade: warning: no user namespaces (" << why << "): falling back to one uid per job\n";
+        } else {
+            throw Error("no sandbox can be had here: bubblewrap fails (" + why + ") and the uid fallback needs root. "
+                        "Refusing to run student code; --no-sandbox runs it unprotected (unsafe)");
+        }
+    }
+    std::cerr << "t10-grade: student code runs with isolation " << isolationName(isolation_);
+    if (!jobUids_.empty()) {
+        std::cerr << " (job uids";
+        for (std::size_t i = 0; i < jobUids_.size(); ++i) std::cerr << (i ? "," : " ") << jobUids_[i];
+        std::cerr << ")";
+    }
+    std::cerr << "\n";
+    if (isolation_ == Isolation::Uid) {
+        struct stat info {};
+        if (::stat(referenceStageDir().c_str(), &info) == 0 && (info.st_mode & S_IROTH)) {
+            std::cerr << "t10-grade: warning: --isolation uid: " << referenceStageDir()
+                      << " is readable by others, so student code can read the reference shaders (chmod o-rwx it)\n";
+        }
+    }
+}
+
+SandboxRun Grader::sandbox(int job, const SandboxLimits& limits) const {
+    SandboxRun run;
+    run.isolation = isolation_;
+    run.uid = jobUids_.empty() ? 0 : jobUids_[static_cast<std::size_t>(job) % jobUids_.size()];
+    run.mounts = projectMounts_;
+    run.limits = limits;
+    return run;
+}
 
 void Grader::prepareInputs() {
     inputsDir_ = (fs::absolute(config_.cacheDir) / "inputs").string();
-    if (fs::exists(inputsDir_ + "/ramp.exr") && fs::exists(inputsDir_ + "/hot.exr")) return;
-    const std::string temporary = inputsDir_ + uniqueSuffix();
-    fs::create_directories(temporary);
-    const RunResult result = runLimited({std::string(T10_GRADE_BIN_DIR) + "/make_test_images", temporary},
-                                        Limits{}, temporary + ".log");
-    if (!result.ok()) throw Error("make_test_images " + result.describe() + ":\n" + result.output);
-    fs::remove(temporary + ".log");
-    publishDirectory(temporary, inputsDir_);
+    // Inputs of an older grader (without ramp.exr) or whose recorded hashes no longer hold are made again.
+    if (fs::exists(inputsDir_) && (!manifestHolds(inputsDir_) || !fs::exists(inputsDir_ + "/ramp.exr")))
+        fs::remove_all(inputsDir_);
+    if (!fs::exists(inputsDir_)) {
+        const std::string temporary = inputsDir_ + uniqueSuffix();
+        fs::create_directories(temporary);
+        const RunResult result = runLimited({std::string(T10_GRADE_BIN_DIR) + "/make_test_images", temporary},
+                                            Limits{}, temporary + ".log");
+        if (!result.ok()) throw Error("make_test_images " + result.describe() + ":\n" + result.output);
+        fs::remove(temporary + ".log");
+        writeManifest(temporary);
+        publishDirectory(temporary, inputsDir_);
+    }
+    // The jobs read a copy: the cache itself is the grader's alone.
+    publicInputs_ = workRoot_ / "inputs";
+    fs::copy(inputsDir_, publicInputs_);
+    fs::remove(publicInputs_ / kManifest);
+    fs::permissions(publicInputs_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                       fs::perms::others_read | fs::perms::others_exec, fs::perm_options::replace);
 }
 
 void Grader::prepareReference() {
-    // The reference renders are kept until the reference program or its shaders change.
-    std::string stamp = referenceBinary_;
+    // The reference renders are kept until the reference program or its shaders change, and used only
+    // while their recorded hashes hold; the reference is trusted code and renders outside the sandbox.
+    std::string stamp = referenceBinary_ + " with a Mesa cache seed";
     stamp += std::to_string(fs::last_write_time(referenceBinary_).time_since_epoch().count());
-    for (const std::string& shader : info_.shaders)
-        stamp += readFile(std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage + "/" + shader);
+    for (const std::string& shader : info_.shaders) stamp += readFile(referenceStageDir() + "/" + shader);
     referenceDir_ = (fs::absolute(config_.cacheDir) / ("reference-" + std::string(info_.stage) + "-" + hashOf(stamp))).string();
-    if (fs::exists(referenceDir_)) return;
+    if (fs::exists(referenceDir_) && manifestHolds(referenceDir_)) return;
+    if (fs::exists(referenceDir_)) {
+        std::cerr << "t10-grade: warning: " << referenceDir_ << " does not match its recorded hashes: rendered again\n";
+        fs::remove_all(referenceDir_);
+    }
     const std::string temporary = referenceDir_ + uniqueSuffix();
     for (const CaseSpec& spec : cases(config_.part)) {
         const std::string out = temporary + "/" + spec.id;
         fs::create_directories(out);
-        const RunResult result = runLimited(renderCommand(referenceBinary_, spec, "", out), Limits{}, out + "/run.log");
+        std::vector<std::string> argv{referenceBinary_, "--headless", "--backend", "egl", "--frames", "1"};
+        for (const std::string& a : caseArgs(spec, inputsDir_)) argv.push_back(a);
+        argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
+        // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
+        // are the reference's, and compiling them again costs more than the render.
+        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", {"MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed"});
         if (!result.ok()) throw Error("the reference " + std::string(info_.stage) + " (" + spec.id + ") " + result.describe() + ":\n" + result.output);
     }
+    writeManifest(temporary);
     publishDirectory(temporary, referenceDir_);
+    if (!manifestHolds(referenceDir_)) throw Error(referenceDir_ + ": changed while it was published");
 }
 
-std::string Grader::build(const std::string& source, std::string& log) const {
-    // The key: the code, the recipe, and when each library was last built (a rebuilt common/ must
-    // not leave stale programs in the cache).
+std::string Grader::build(const std::string& source, int job, const fs::path& work, std::string& log) const {
+    // The key: the code, the recipe, the sandbox's layout, and when each library was last built (a
+    // rebuilt common/ must not leave stale programs in the cache).
     // Part 3 programs carry the blur pass capture (pass_capture.cpp): the submission's call of
     // t10::runStage() is renamed to the capture's t10::gradeRunStage().
     const std::string capture = std::string(T10_GRADE_SOURCE_DIR) + "/tools/grade/pass_capture.cpp";
     const bool captures = config_.part == 3;
-    std::string key = kit_.text + info_.stage + readFile(source) + (captures ? readFile(capture) : "");
+    std::string key = kit_.text + info_.stage + readFile(source) + (captures ? readFile(capture) : "") +
+                      "sandbox layout 1 " + isolationName(isolation_);
     for (const std::string& lib : kit_.libs) {
         std::error_code error;
         const auto time = fs::last_write_time(lib, error);
@@ -429,39 +772,67 @@ std::string Grader::build(const std::string& source, std::string& log) const {
     }
     const fs::path dir = fs::absolute(config_.cacheDir) / "builds" / hashOf(key);
     const std::string program = (dir / "student").string();
-    if (fs::exists(program)) {
+    if (fs::exists(dir) && manifestHolds(dir)) {
         log = readFile((dir / "build.log").string());
         return program;
     }
-    const fs::path temporary = dir.string() + uniqueSuffix();
-    fs::create_directories(temporary);
+    std::error_code ignored;
+    fs::remove_all(dir, ignored); // absent, or failed its hashes: built again
+
+    const SandboxLimits limits{300.0, 300, 4096, 256, 256, 64, 512};
+    SandboxRun run = sandbox(job, limits);
+    const fs::path out = work / ("build" + uniqueSuffix());
+    makeDir(out, run.uid, 0700);
+    run.mounts.push_back({source, "/submission/Tutorial10.cpp", false});
+    run.mounts.push_back({out.string(), "/out", true});
+    run.workingDirectory = "/out";
+    const bool namespaces = isolation_ == Isolation::Namespaces;
+    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", std::string("TMPDIR=") + (namespaces ? "/tmp" : out.string()),
+               std::string("HOME=") + (namespaces ? "/tmp" : out.string())};
+
     std::vector<std::string> argv{kit_.compiler};
     argv.insert(argv.end(), kit_.flags.begin(), kit_.flags.end());
-    for (const std::string& include : kit_.includes) argv.push_back("-I" + include);
+    for (std::size_t i = 0; i < kit_.includes.size(); ++i) argv.push_back("-I" + run.path("/t10/include/" + std::to_string(i)));
     for (const std::string& define : kit_.defines) argv.push_back("-D" + define);
     argv.push_back(std::string("-DT10_STAGE_NAME=\"") + info_.stage + "\"");
-    argv.push_back(std::string("-DT10_STAGE_SHADER_DIR=\"") + T10_GRADE_SOURCE_DIR + "/" + info_.stage + "\"");
+    // Where the program finds its shaders without --shader-dir: the submission's own folder inside
+    // the sandbox (it does not exist outside it).
+    argv.push_back("-DT10_STAGE_SHADER_DIR=\"/submission\"");
+    if (captures) argv.insert(argv.end(), {"-DrunStage=gradeRunStage", run.path("/t10/grade/pass_capture.cpp")});
     // The submission's own file, so that the compiler's messages name it.
-    if (captures) argv.insert(argv.end(), {"-DrunStage=gradeRunStage", capture});
-    argv.insert(argv.end(), {source, "-o", (temporary / "student").string()});
-    argv.insert(argv.end(), kit_.libs.begin(), kit_.libs.end());
+    argv.insert(argv.end(), {run.path("/submission/Tutorial10.cpp"), "-o", run.path("/out/student")});
+    for (std::size_t i = 0; i < kit_.libs.size(); ++i) {
+        const std::string& lib = kit_.libs[i];
+        const bool project = !lib.empty() && lib[0] == '/' && lib.rfind("/usr/", 0) != 0;
+        argv.push_back(project ? run.path("/t10/lib/" + std::to_string(i) + "-" + fs::path(lib).filename().string()) : lib);
+    }
+    const RunResult result = runSandboxed(run, argv, (work / "build.log").string());
+    log = result.output;
+    const fs::path built = out / "student";
+    std::error_code error;
+    const bool regular = fs::is_regular_file(fs::symlink_status(built, error));
+    if (!result.ok() || !regular) {
+        if (!result.timedOut && result.signal == 0 && log.empty()) log = "the compiler " + result.describe();
+        if (result.timedOut) log += "\nthe build " + result.describe();
+        fs::remove_all(out, ignored);
+        return "";
+    }
+    // Published by the grader: the program, its log, the command, and their hashes.
+    const fs::path temporary = dir.string() + uniqueSuffix();
+    fs::create_directories(temporary);
+    copyFile(built, temporary / "student", 0700);
+    std::ofstream(temporary / "build.log") << log;
     {
-        // The command, so that an instructor can rebuild it by hand.
+        // The command, so that an instructor can see how it was built (paths as inside the sandbox).
         std::ofstream script(temporary / "build.sh");
-        script << "#!/bin/sh\n";
+        script << "#!/bin/sh\n# run by t10-grade inside its sandbox (" << isolationName(isolation_) << ")\n";
         for (const std::string& a : argv) script << "'" << a << "' ";
         script << "\n";
     }
-    const Limits limits{300.0, 300, 4096};
-    const RunResult result = runLimited(argv, limits, (temporary / "build.log").string());
-    log = result.output;
-    if (!result.ok()) {
-        if (!result.timedOut && result.signal == 0 && log.empty()) log = "the compiler " + result.describe();
-        if (result.timedOut) log += "\nthe build " + result.describe();
-        fs::remove_all(temporary);
-        return "";
-    }
+    fs::remove_all(out, ignored);
+    writeManifest(temporary);
     publishDirectory(temporary, dir);
+    if (!manifestHolds(dir)) return build(source, job, work, log);
     return program;
 }
 
@@ -478,8 +849,16 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
                                          images.string(), "-b", base},
                                         Limits{120.0, 120, 4096}, (images / (base + ".log")).string());
     const auto at = result.output.find("Mean:");
+    check.tolerance = "mean FLIP <= 0.005: the reference renders identically on the same driver (0), an "
+                      "equivalent rewrite measures below 1e-6, the subtlest known mistake 0.03";
     if (!result.ok() || at == std::string::npos) {
-        throw Error("FLIP " + result.describe() + " on " + studentFrame + ":\n" + result.output);
+        // The frame passed the grader's own checks (a PNG of the case's size), so a frame FLIP still
+        // cannot read is the submission's: a failed check, never the grader's failure.
+        check.passed = false;
+        check.measured = "FLIP cannot compare the frame with the reference (" + result.describe() + ")";
+        check.diagnosis = "the frame is not a PNG that FLIP can read";
+        fs::remove(images / (base + ".log"));
+        return check;
     }
     const double mean = std::strtod(result.output.c_str() + at + 5, nullptr);
     // The reference program renders the same frame on the same driver bit for bit (mean 0). An
@@ -491,8 +870,6 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     std::ostringstream measured;
     measured << "mean FLIP " << mean << " against the reference stage (" << spec.description << ")";
     check.measured = measured.str();
-    check.tolerance = "mean FLIP <= 0.005: the reference renders identically on the same driver (0), an "
-                      "equivalent rewrite measures below 1e-6, the subtlest known mistake 0.03";
     fs::remove(images / (base + ".log"));
     if (check.passed) {
         fs::remove(images / (base + ".png"));
@@ -515,16 +892,34 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     return check;
 }
 
-Report Grader::grade(const std::string& submission, const std::string& name) const {
+Report Grader::grade(const std::string& submission, const std::string& name, int job) const {
     const auto start = std::chrono::steady_clock::now();
     Report report;
     report.submission = name;
     report.path = submission;
     report.part = config_.part;
     report.rubric = loadRubric(config_.part); // a faulty rubric stops before any build or render
+    report.isolation = isolationName(isolation_);
+    report.fill = fillPolicyName(config_.fill);
     const fs::path out = fs::absolute(config_.reportDir) / report.submission;
     fs::remove_all(out);
     fs::create_directories(out);
+
+    // The job's private work folder: only the grader and the job's uid can enter it.
+    const SandboxLimits renderLimits{config_.timeout, static_cast<int>(config_.timeout * 2) + 5, 4096, 64, 256, 64, 64};
+    const SandboxRun base = sandbox(job, renderLimits);
+    const fs::path work = workRoot_ / ("job" + uniqueSuffix());
+    makeDir(work, 0, 0750);
+    if (base.uid != 0 && ::chown(work.c_str(), 0, base.uid) != 0) throw Error(work.string() + ": chown: " + std::strerror(errno));
+    struct Cleanup {
+        fs::path dir;
+        ~Cleanup() {
+            std::error_code error;
+            fs::remove_all(dir, error);
+        }
+    } cleanup{work};
+    // Reports are written only here, after every process of the submission is dead (runSandboxed
+    // returns only then).
     auto finish = [&](Report& r) {
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         writeReportJson(r, (out / "report.json").string());
@@ -532,36 +927,86 @@ Report Grader::grade(const std::string& submission, const std::string& name) con
         return r;
     };
 
-    const std::string sourceDir = fs::absolute(submission).string();
-    std::string binary = referenceBinary_;
-    // Part 3 always runs a program built here, so that its blur passes are captured: a
-    // shaders-only submission gets the reference host code (built once, then cached).
-    const std::string host = fs::exists(sourceDir + "/Tutorial10.cpp") ? sourceDir + "/Tutorial10.cpp"
-                             : config_.part == 3                         ? referenceHost()
-                                                                         : "";
-    if (!host.empty()) {
-        std::string log;
-        binary = build(host, log);
-        std::ofstream(out / "build.log") << log;
-        if (binary.empty()) {
-            report.status = "build-failed";
-            report.message = "Tutorial10.cpp does not build against common/:\n" + tail(log, 40);
-            return finish(report);
+    const fs::path shaders = work / "submission";
+    // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
+    // the report names them after the submission folder instead, as the student knows them.
+    auto studentPaths = [&](std::string text) {
+        for (const std::string& prefix : {std::string("/submission/"), shaders.string() + "/", (work / "nan-probe-shaders").string() + "/"}) {
+            for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
+                text.replace(at, prefix.size(), report.submission + "/");
+                at += report.submission.size() + 1;
+            }
         }
+        return text;
+    };
+    const CopiedSubmission copied = copySubmission(fs::absolute(submission).string(), files_, referenceStageDir(),
+                                                   config_.fill, shaders.string());
+    report.files = copied.files;
+    if (copied.empty) {
+        report.status = "empty";
+        report.message = "the submission has no file of Part " + std::to_string(config_.part) +
+                         " (see the file list: a name in the wrong case or a symlink is not taken)";
+        return finish(report);
+    }
+    if (!copied.missing.empty()) {
+        report.status = "missing-files";
+        report.message = "missing:";
+        for (const std::string& file : copied.missing) report.message += " " + file;
+        report.message += " (this part asks for them; the instructor's --fill-from-reference " +
+                          std::string(fillPolicyName(config_.fill)) + " does not take them from the reference)";
+        return finish(report);
     }
 
-    const Limits limits{config_.timeout, static_cast<int>(config_.timeout * 2) + 5, 4096};
+    std::string log;
+    const std::string built = build((shaders / "Tutorial10.cpp").string(), job, work, log);
+    std::ofstream(out / "build.log") << studentPaths(log);
+    if (built.empty()) {
+        report.status = "build-failed";
+        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40));
+        return finish(report);
+    }
+    // The job's copy of the program: the cache is not readable by its uid.
+    const fs::path program = work / "student";
+    copyFile(built, program, 0750);
+    if (base.uid != 0 && ::chown(program.c_str(), 0, base.uid) != 0) throw Error(program.string() + ": chown: " + std::strerror(errno));
+    // Its own Mesa shader cache, started from the grader's seed (the reference's shaders, compiled
+    // when the reference rendered): what it writes there reaches no other submission.
+    const fs::path mesa = work / "mesa-cache";
+    const fs::path seed = fs::path(referenceDir_) / "mesa-seed";
+    if (fs::is_directory(fs::symlink_status(seed))) copyTree(seed, mesa, base.uid);
+    else makeDir(mesa, base.uid, 0700);
+    const fs::path tmp = work / "tmp";
+    makeDir(tmp, base.uid, 0700);
+
     std::vector<CaseRun> runs;
+    const bool namespaces = isolation_ == Isolation::Namespaces;
+    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
     for (const CaseSpec& spec : cases(config_.part)) {
-        const std::string dir = (out / "runs" / spec.id).string();
-        fs::create_directories(dir);
-        std::string shaderDir = sourceDir;
+        const fs::path logs = out / "runs" / spec.id;
+        fs::create_directories(logs);
+        const fs::path dir = work / ("out-" + spec.id);
+        makeDir(dir, base.uid, 0700);
+        std::string shaderDir = shaders.string();
         if (spec.id == "extremes") {
-            const std::string probe = writeNanProbe(sourceDir, std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage,
-                                                    (out / "runs" / "nan-probe-shaders").string());
+            const std::string probe = writeNanProbe(shaders.string(), (work / "nan-probe-shaders").string());
             if (!probe.empty()) shaderDir = probe;
         }
-        const RunResult result = runLimited(renderCommand(binary, spec, shaderDir, dir), limits, dir + "/run.log");
+        SandboxRun run = base;
+        run.mounts.push_back({program.string(), "/t10/bin/student", false});
+        run.mounts.push_back({shaderDir, "/submission", false});
+        run.mounts.push_back({publicInputs_.string(), "/t10/inputs", false});
+        run.mounts.push_back({mesa.string(), "/mesa-cache", true});
+        run.mounts.push_back({dir.string(), "/out", true});
+        run.workingDirectory = "/out";
+        // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
+        run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
+                   "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp.string()),
+                   "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp.string())};
+        std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
+        for (const std::string& a : caseArgs(spec, run.path("/t10/inputs"))) argv.push_back(a);
+        argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
+                                 run.path("/out/frame.png")});
+        const RunResult result = runSandboxed(run, argv, (logs / "run.log").string());
         if (!result.ok()) {
             const std::string& o = result.output;
             if (result.timedOut || result.signal == SIGXCPU) {
@@ -575,12 +1020,22 @@ Report Grader::grade(const std::string& submission, const std::string& name) con
             }
             report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
                              (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
-                             ". Its last output:\n" + tail(o, 30);
+                             (result.signal == SIGXFSZ ? " (a file over the size limit)" : "") +
+                             ". Its last output:\n" + studentPaths(tail(o, 30));
+            return finish(report);
+        }
+        // Its outputs, as hostile files: every process of the run is dead, so they cannot change now.
+        std::string fault = checkOutputs(dir);
+        if (fault.empty()) fault = checkFrame((dir / "frame.png").string(), spec.width, spec.height);
+        if (!fault.empty()) {
+            report.status = "crashed";
+            report.message = "case " + spec.id + " (" + spec.description + "): the program exited 0 but " +
+                             (fault.rfind("it ", 0) == 0 ? fault.substr(3) : "its output is unusable: " + fault);
             return finish(report);
         }
         runs.push_back(CaseRun{spec.id, spec.description, spec.camera, t10::test::Dump{}});
         try {
-            runs.back().dump = loadDumpDir(dir);
+            runs.back().dump = loadDumpDir(dir.string());
         } catch (const Error& error) {
             report.status = "crashed";
             report.message = "case " + spec.id + ": the program exited 0 but wrote no readable output: " + error.what();
@@ -605,7 +1060,7 @@ Report Grader::grade(const std::string& submission, const std::string& name) con
             checks.push_back(check);
         }
         if (specs[i].camera) {
-            Check flip = flipCheck(specs[i], (out / "runs" / specs[i].id / "frame.png").string(), out.string(), checks);
+            Check flip = flipCheck(specs[i], (work / ("out-" + specs[i].id) / "frame.png").string(), out.string(), checks);
             // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
             // every buffer is right and the frame is not: it costs the steps that make the frame.
             const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });
@@ -641,10 +1096,10 @@ int main(int argc, char** argv) {
         std::atomic<std::size_t> next{0};
         std::atomic<bool> failed{false};
         std::mutex printing;
-        auto worker = [&]() {
+        auto worker = [&](int job) {
             for (std::size_t i = next++; i < config.submissions.size(); i = next++) {
                 try {
-                    reports[i] = grader.grade(config.submissions[i], config.names[i]);
+                    reports[i] = grader.grade(config.submissions[i], config.names[i], job);
                     const std::lock_guard<std::mutex> lock(printing);
                     std::cout << reports[i].submission << ": " << reports[i].status << ", score " << reports[i].score()
                               << " (" << reports[i].passedCount() << "/" << reports[i].checks.size() << " checks) in "
@@ -656,6 +1111,8 @@ int main(int argc, char** argv) {
                     reports[i].path = config.submissions[i];
                     reports[i].part = config.part;
                     reports[i].status = "grader-error";
+                    reports[i].isolation = isolationName(grader.isolation());
+                    reports[i].fill = fillPolicyName(config.fill);
                     reports[i].message = std::string("the grader failed: ") + error.what();
                     failed = true;
                 }
@@ -669,7 +1126,7 @@ int main(int argc, char** argv) {
             }
         };
         std::vector<std::thread> threads;
-        for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j) threads.emplace_back(worker);
+        for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j) threads.emplace_back(worker, j);
         for (std::thread& t : threads) t.join();
         const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
         writeGradebook(reports, gradebook);

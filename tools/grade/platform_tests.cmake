@@ -14,7 +14,7 @@ foreach(name IN LISTS PLATFORM_SUBMISSIONS)
 endforeach()
 add_test(NAME "grade platforms: part 3 batch with every --format"
          COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_TIMEOUT} --format gradescope --format prairielearn
-                 --format classroom --report ${PLATFORM_OUT}/batch ${folders})
+                 --format classroom --fill-from-reference all --report ${PLATFORM_OUT}/batch ${folders})
 set_tests_properties("grade platforms: part 3 batch with every --format" PROPERTIES COST 500
                      FIXTURES_SETUP grade_platforms FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
 
@@ -43,8 +43,9 @@ foreach(platform gradescope prairielearn)
     add_test(NAME "grade platforms: ${platform} scripts end to end in a scratch root"
              COMMAND ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${Python3_EXECUTABLE} ${PLATFORM_TESTS}/platform_e2e.py
                      ${platform} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR} ${GRADE_SUBMISSIONS}/part3/weight ${PLATFORM_OUT}/${platform})
+    # The test submission (weight) holds only the shader its mistake changes: the rest from the reference.
     set_tests_properties("grade platforms: ${platform} scripts end to end in a scratch root" PROPERTIES
-                         FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                         FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77 ENVIRONMENT "T10_FILL_FROM_REFERENCE=all")
 endforeach()
 
 add_test(NAME "grade platforms: a class named from a path component or a roster, its index and LMS CSV"

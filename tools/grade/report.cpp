@@ -188,6 +188,13 @@ void writeReportJson(const Report& report, const std::string& path) {
             first = false;
         }
     }
+    out << "\n  ],\n  \"isolation\": " << jsonString(report.isolation)
+        << ",\n  \"fill_from_reference\": " << jsonString(report.fill) << ",\n  \"files\": [";
+    for (std::size_t i = 0; i < report.files.size(); ++i) {
+        const SubmissionFile& f = report.files[i];
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonString(f.name) << ", \"source\": " << jsonString(f.source)
+            << ", \"reason\": " << jsonString(f.reason) << ", \"bytes\": " << f.bytes << "}";
+    }
     out << "\n  ],\n  \"checks\": [";
     for (std::size_t i = 0; i < report.checks.size(); ++i) {
         const Check& c = report.checks[i];
@@ -231,7 +238,8 @@ void writeReportHtml(const Report& report, const std::string& path) {
         << "overflow-wrap:anywhere}.images{display:flex;flex-wrap:wrap;gap:.5em}figure{margin:0;flex:1 1 10em;max-width:16em}"
         << "figure img{width:100%;image-rendering:pixelated;border:1px solid #999}figcaption{font-size:.85em}"
         << "pre{white-space:pre-wrap;background:#eee;padding:.5em;overflow-wrap:anywhere}"
-        << "ul.steps{padding-left:1.2em}a{color:#05c}"
+        << "ul.steps{padding-left:1.2em}a{color:#05c}table{border-collapse:collapse;display:block;overflow-x:auto}"
+        << "td,th{border:1px solid #999;padding:.2em .5em;text-align:left}tr.fail td{background:#fdd}"
         << "@media (max-width:30em){dl{grid-template-columns:1fr}dt{margin-top:.3em}}"
         << "@media print{body{max-width:none;font-size:10pt}a{color:#000}.check{border-left-width:3px}"
         << "a[href^=http]::after{content:\" (\" attr(href) \")\"}}</style></head><body>\n"
@@ -251,6 +259,16 @@ void writeReportHtml(const Report& report, const std::string& path) {
         << "check blames; a step loses its points once, however many checks see it. " << report.passedCount() << " of "
         << report.checks.size() << " checks passed.</p></div>\n";
     if (!report.message.empty()) out << "<pre>" << html(report.message) << "</pre>\n";
+    out << "<p>Isolation: " << html(report.isolation) << (report.isolation == "none" ? " (run with --no-sandbox: unsafe)" : "")
+        << ". Missing files taken from the reference: " << html(report.fill) << ".</p>\n";
+    if (!report.files.empty()) {
+        out << "<table><tr><th>file</th><th>graded from</th><th>why</th></tr>\n";
+        for (const SubmissionFile& f : report.files) {
+            out << "<tr" << (f.source == "ignored" || f.source == "missing" ? " class=\"fail\"" : "") << "><td>"
+                << html(f.name) << "</td><td>" << html(f.source) << "</td><td>" << html(f.reason) << "</td></tr>\n";
+        }
+        out << "</table>\n";
+    }
     // Failed checks first, in the order the chain computes them: the first is where it goes wrong.
     for (int pass = 0; pass < 2; ++pass) {
         bool heading = false;
@@ -291,7 +309,7 @@ void writeReportHtml(const Report& report, const std::string& path) {
 
 void writeGradebook(const std::vector<Report>& reports, const std::string& path) {
     std::ostringstream out;
-    out << "submission,part,status,score,passed,total,failed_checks,failed_steps\n";
+    out << "submission,part,status,score,passed,total,failed_checks,failed_steps,isolation,fill_from_reference\n";
     for (const Report& r : reports) {
         std::string failed;
         for (const Check& c : r.checks)
@@ -303,7 +321,7 @@ void writeGradebook(const std::vector<Report>& reports, const std::string& path)
                    for (int step : r.failedSteps()) steps += (steps.empty() ? "" : " ") + std::to_string(step);
                    return steps;
                }())
-            << "\n";
+            << "," << r.isolation << "," << r.fill << "\n";
     }
     writeAtomically(path, out.str());
 }

@@ -29,13 +29,25 @@ std::string RunResult::describe() const {
 }
 
 RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits, const std::string& logFile,
-                     const std::string& workingDirectory) {
+                     const std::string& workingDirectory, const std::vector<std::string>& environment) {
     if (argv.empty()) throw Error("runLimited: no command");
     const int log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (log < 0) throw Error(logFile + ": cannot create log file: " + std::strerror(errno));
     std::vector<char*> args;
     for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
     args.push_back(nullptr);
+    // The environment, built before fork(): the child of a multithreaded parent must not allocate.
+    std::vector<std::string> variables = environment;
+    for (char** e = environ; *e != nullptr; ++e) {
+        const std::string variable = *e;
+        const std::string name = variable.substr(0, variable.find('='));
+        bool replaced = false;
+        for (const std::string& v : environment) replaced = replaced || v.rfind(name + "=", 0) == 0;
+        if (!replaced) variables.push_back(variable);
+    }
+    std::vector<char*> env;
+    for (std::string& variable : variables) env.push_back(variable.data());
+    env.push_back(nullptr);
 
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = ::fork();
@@ -63,7 +75,7 @@ RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits,
         const int null = ::open("/dev/null", O_RDONLY);
         if (null >= 0) ::dup2(null, STDIN_FILENO);
         if (!workingDirectory.empty() && ::chdir(workingDirectory.c_str()) != 0) _exit(126);
-        ::execvp(args[0], args.data());
+        ::execvpe(args[0], args.data(), env.data());
         // Only async-signal-safe calls between fork and exec: the parent may be multithreaded.
         static const char kFailed[] = "cannot run the command: ";
         const char* reason = ::strerror(errno);

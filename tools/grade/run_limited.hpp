@@ -1,4 +1,5 @@
-// Runs a student's program (or compiler) as a child process under limits: wall time (the whole
+// Runs a program as a child process under limits (t10-grade runs its trusted tools with it, the
+// reference and FLIP; student code goes through sandbox.hpp; t10-grade-tga runs converters): wall time (the whole
 // process group is killed when it runs out, so a hanging shader cannot stall the grader), CPU
 // time and address space (setrlimit), with stdout and stderr captured into one log file.
 #pragma once
@@ -25,7 +26,8 @@ struct RunResult {
 };
 
 // Runs argv[0] with argv (PATH is searched); throws t10::Error if the process cannot be started.
+// `environment` ("NAME=value") is added to the grader's own.
 RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits, const std::string& logFile,
-                     const std::string& workingDirectory = "");
+                     const std::string& workingDirectory = "", const std::vector<std::string>& environment = {});
 
 } // namespace t10::grade

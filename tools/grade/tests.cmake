@@ -35,7 +35,7 @@ foreach(part 1 2 3)
         list(APPEND folders ${GRADE_SUBMISSIONS}/part${part}/${name})
     endforeach()
     add_test(NAME "grade: part ${part} batch with --jobs 2"
-             COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/part${part} ${folders})
+             COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/part${part} ${folders})
     # COST: ctest starts the long batches first, beside the many short tests.
     set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES COST 1000
                          FIXTURES_SETUP grade_part${part} FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
@@ -61,7 +61,7 @@ foreach(name IN LISTS GRADE_FITTED)
     list(APPEND folders ${GRADE_SUBMISSIONS}/part3/${name})
 endforeach()
 add_test(NAME "grade: fitted parameters batch with --jobs 2"
-         COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/fitted ${folders})
+         COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/fitted ${folders})
 set_tests_properties("grade: fitted parameters batch with --jobs 2" PROPERTIES COST 1000
                      FIXTURES_SETUP grade_fitted FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
 add_test(NAME "grade: fitted parameters named with their measured values"
@@ -92,7 +92,7 @@ endforeach()
 set(single_gradebooks "")
 foreach(name weight viewport_reset no_compile)
     add_test(NAME "grade: ${name} alone"
-             COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --report ${GRADE_REPORTS}/alone-${name}
+             COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/alone-${name}
                      ${GRADE_SUBMISSIONS}/part3/${name})
     set_tests_properties("grade: ${name} alone" PROPERTIES
                          FIXTURES_SETUP grade_alone FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
@@ -111,6 +111,8 @@ foreach(case
         "2;/nonexistent-submission: not a folder;--part;1;/nonexistent-submission"
         "2;--jobs 0: expected a number from 1 to 64;--part;1;--jobs;0;${GRADE_SUBMISSIONS}"
         "2;unknown option --bogus;--part;1;--bogus"
+        "2;--isolation bogus: choose auto, namespaces or uid;--part;1;--isolation;bogus;${GRADE_SUBMISSIONS}"
+        "2;--fill-from-reference some: choose unchanged, all or none;--part;1;--fill-from-reference;some;${GRADE_SUBMISSIONS}"
         "2;would overwrite the submission;--part;1;--report;${PROJECT_SOURCE_DIR};${PROJECT_SOURCE_DIR}/tutorial10_part1_tonemap")
     list(POP_FRONT case code regex)
     string(REPLACE ";" " " label "${case}")
@@ -136,3 +138,21 @@ foreach(case "flip;FAIL  rgb24_raw_bl: wrong orientation" "swap;FAIL  rgb24_raw_
 endforeach()
 add_test(NAME "grade tga: usage without {in} {out}"
          COMMAND ${EXPECT} 2 "must contain \\{in\\} and \\{out\\}" -- ${GRADE_TGA} "tga2png")
+
+# The copy-in: empty, README-only, wrong-case and odd files get their status and file list.
+add_test(NAME "grade: submission files listed, empty and incomplete submissions get their status"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/inputs_check.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade
+                 ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/inputs)
+set_tests_properties("grade: submission files listed, empty and incomplete submissions get their status" PROPERTIES
+                     SKIP_RETURN_CODE 77)
+
+# --- Hostile submissions (issue 19): each attack on the grader is contained, honest submissions
+# graded beside them keep 100. Under namespaces where bwrap works, and under the uid fallback where
+# the tests run as root; each skips (77) saying why elsewhere. One at a time: they count processes.
+foreach(isolation namespaces uid)
+    add_test(NAME "grade: hostile submissions are contained (${isolation})"
+             COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/hostile/hostile.py ${isolation} ${PROJECT_SOURCE_DIR}
+                     ${PROJECT_BINARY_DIR}/bin/t10-grade ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/hostile-${isolation})
+    set_tests_properties("grade: hostile submissions are contained (${isolation})" PROPERTIES
+                         SKIP_RETURN_CODE 77 RESOURCE_LOCK grade_hostile COST 900 TIMEOUT 600)
+endforeach()

@@ -41,7 +41,8 @@ def main():
         if not os.path.isdir(folder):
             continue
         out = os.path.join(report, f"part{part}")
-        code = subprocess.run([t10_grade, "--part", str(part), "--format", "classroom", "--report", out, folder]).returncode
+        code = subprocess.run([t10_grade, "--part", str(part), "--format", "classroom", "--fill-from-reference",
+                               os.environ.get("T10_FILL_FROM_REFERENCE", "unchanged"), "--report", out, folder]).returncode
         result_path = os.path.join(out, f"part{part}", "classroom-result.json")
         try:
             with open(result_path, encoding="utf-8") as f:

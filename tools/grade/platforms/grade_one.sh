@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Grades one submission for a platform and always leaves a result where the platform reads it.
 #   grade_one.sh gradescope|prairielearn SUBMISSION_DIR RESULTS_JSON
-# Reads T10_PART, T10_SOURCE and T10_BUILD from the environment (run_autograder and run.sh set them).
+# Reads T10_PART, T10_SOURCE and T10_BUILD from the environment (run_autograder and run.sh set them), and
+# T10_FILL_FROM_REFERENCE (t10-grade --fill-from-reference; default unchanged: the student hands in the part's files).
 # Only the part's files are copied out of the submission (regular files, no links), so a student's
 # upload cannot point the grader elsewhere. A submission without any of them gets a result saying
 # so: graded as it is, the reference stage would fill in every file and score 100. When t10-grade
@@ -53,7 +54,7 @@ if [ -z "$found" ]; then
 fi
 echo "grading Part $T10_PART:$found"
 timeout -k 10 "$whole_timeout" "$T10_BUILD/bin/t10-grade" --part "$T10_PART" --timeout "$render_timeout" --format "$format" \
-    --report "$work/report" "$work/submission"
+    --fill-from-reference "${T10_FILL_FROM_REFERENCE:-unchanged}" --report "$work/report" "$work/submission"
 code=$?
 produced="$work/report/submission/$format-results.json"
 if [ -f "$produced" ]; then

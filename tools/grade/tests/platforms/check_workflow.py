@@ -99,7 +99,9 @@ def check_grade(t10_grade, submissions, out, errors):
     shutil.copytree(os.path.join(submissions, "part1", "reference1"), os.path.join(student, "part1"))
     shutil.copytree(os.path.join(submissions, "part3", "weight"), os.path.join(student, "part3"))
     env = {**os.environ, "GITHUB_OUTPUT": os.path.join(out, "output.txt"),
-           "GITHUB_STEP_SUMMARY": os.path.join(out, "summary.md"), "GITHUB_REPOSITORY": "student/t10", "GITHUB_RUN_ID": "42"}
+           "GITHUB_STEP_SUMMARY": os.path.join(out, "summary.md"), "GITHUB_REPOSITORY": "student/t10", "GITHUB_RUN_ID": "42",
+           # The test submissions hold only the files their mistake changes.
+           "T10_FILL_FROM_REFERENCE": "all"}
     code = subprocess.run([sys.executable, GRADE_SCRIPT, t10_grade, student, os.path.join(out, "grade-report")], env=env).returncode
     if code != 0:
         errors.append(f"classroom_grade.py exited {code}")
