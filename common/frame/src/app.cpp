@@ -186,7 +186,8 @@ int App::run() {
     // Every output asked for is written after the last frame, or the run fails saying why.
     if (settings_.run.frames == 0 && context_.isWindow() && wantsOutputs(settings_.outputs))
         throw UsageError("--output, --exr and --dump are written after the last of --frames N frames: give --frames");
-    std::string notWritten = "the window was closed before the last frame";
+    const char* const kClosedEarly = "the window was closed before the last frame";
+    std::string notWritten = kClosedEarly;
     resize(width_, height_);
     const bool window = context_.isWindow();
     if (settings_.bench.frames > 0 && stageReady_) runBenchmark();
@@ -198,7 +199,12 @@ int App::run() {
     // frame's scene while nothing moved (render-on-change, see the top of this file).
     for (int frame = 0; frames == 0 || frame < frames; ++frame) {
         context_.pollEvents();
-        if (context_.shouldClose()) break;
+        if (context_.shouldClose()) {
+            // A window destroyed from outside may first report a 0x0 framebuffer (below): the closing
+            // is what ended the run, whatever the last frames looked like.
+            if (!notWritten.empty()) notWritten = kClosedEarly;
+            break;
+        }
         followSize(frame);
         const double elapsed = secondsSince(last);
         last = Clock::now();
