@@ -51,10 +51,13 @@ double meanLogLuminance(const ImageF& accumulation) {
     return sum / (double(accumulation.width) * accumulation.height);
 }
 
+double middleGrey(double sceneKey, const Settings& settings) {
+    return settings.middleGrey - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
+}
+
 double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
     if (!(y > 0.0)) return 0.0;
-    const double middleGrey = settings.middleGrey - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
-    const double relative = middleGrey * y / sceneKey;
+    const double relative = middleGrey(sceneKey, settings) * y / sceneKey;
     const double yw = settings.whitePoint;
     return relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
 }

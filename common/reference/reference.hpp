@@ -52,6 +52,8 @@ double toUnorm16(double v);
 double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Settings& settings = {});
 // The unclamped log-average, mean(ln(Y + epsilon)): the tutorial's formula for ln Ya.
 double meanLogLuminance(const ImageF& accumulation);
+// Middle grey dg of step 9 from the scene key Ya: middleGrey - 2 / (2 + log10(Ya + 1)).
+double middleGrey(double sceneKey, const Settings& settings = {});
 // The tone map of steps 8-9 for a linear HDR colour and the key Ya (black stays black).
 Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
 // The tone map of a luminance alone: the new luminance Y' of step 9 (0 for y <= 0).

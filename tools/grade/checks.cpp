@@ -465,7 +465,7 @@ double worstStoreError(const ImageF& gpu, const ImageF& cpu, const ImageF* class
     return worst;
 }
 
-// --- Each blur pass (steps 27, 32-34), captured by pass_capture.cpp. --------------------------------
+// --- Each blur pass (steps 27, 32-34), captured by --capture-passes. -------------------------------
 struct CapturedPass {
     std::string subroutine; // the subroutine the pass ran with
     ImageF image;           // the texture level it drew into
@@ -1001,7 +1001,7 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string&
         passCheck.passed = captured && !passes.empty();
         if (!captured) {
             passCheck.measured = "no pass was captured (the grader's capture did not run)";
-            passCheck.diagnosis = "the program was not built with t10-grade's pass capture";
+            passCheck.diagnosis = "the program did not run the frame loop's pass capture (--capture-passes)";
         } else if (passes.empty()) {
             passCheck.measured = "the blur program drew no pass into a texture";
             passCheck.diagnosis = "no blur pass: check the blur framebuffers and draws (steps 30, 32-34)";

@@ -1,5 +1,5 @@
 // The checks t10-grade runs on one rendered case of a submission: every intermediate buffer that
-// the part writes (luminance levels and key, bloom levels, each blur pass as pass_capture.cpp
+// the part writes (luminance levels and key, bloom levels, each blur pass as --capture-passes
 // recorded it, the blurred bloom) against the CPU
 // reference of tests/numeric, the final frame against the CPU tone map of the buffers the GPU
 // produced, and the frame against the reference stage with FLIP. A failed check fits the tutorial's

@@ -9,8 +9,8 @@
 // then it renders four cases under limits (a power-of-two size with one camera, a
 // non-power-of-two size with another, and two synthetic inputs: black pixels next to pixels far
 // above the white point, and one hot pixel), and checks.hpp compares every buffer with the CPU
-// reference and the frame with the reference stage (FLIP). Part 3 programs are built with
-// pass_capture.cpp, which records each blur pass beside the dump. Writes DIR/<submission>/report.json and
+// reference and the frame with the reference stage (FLIP). Part 3 programs run with --capture-passes
+// (the frame loop's capture hook, frame_observer.hpp), which records each blur pass beside the dump. Writes DIR/<submission>/report.json and
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
 // index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
 // report, 1 when the grader failed, 2 on bad usage.
@@ -639,7 +639,6 @@ Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(confi
             projectMounts_.push_back({path, path, false});
         }
     }
-    projectMounts_.push_back({std::string(T10_GRADE_SOURCE_DIR) + "/tools/grade/pass_capture.cpp", "/t10/grade/pass_capture.cpp", false});
 
     prepareInputs();
     prepareReference();
@@ -758,13 +757,9 @@ void Grader::prepareReference() {
 
 std::string Grader::build(const std::string& source, int job, const fs::path& work, std::string& log) const {
     // The key: the code, the recipe, the sandbox's layout, and when each library was last built (a
-    // rebuilt common/ must not leave stale programs in the cache).
-    // Part 3 programs carry the blur pass capture (pass_capture.cpp): the submission's call of
-    // t10::runStage() is renamed to the capture's t10::gradeRunStage().
-    const std::string capture = std::string(T10_GRADE_SOURCE_DIR) + "/tools/grade/pass_capture.cpp";
-    const bool captures = config_.part == 3;
-    std::string key = kit_.text + info_.stage + readFile(source) + (captures ? readFile(capture) : "") +
-                      "sandbox layout 1 " + isolationName(isolation_);
+    // rebuilt common/ must not leave stale programs in the cache). Every part is built the same way:
+    // Part 3's blur passes are recorded at run time by the frame loop's capture hook (--capture-passes).
+    std::string key = kit_.text + info_.stage + readFile(source) + "sandbox layout 2 " + isolationName(isolation_);
     for (const std::string& lib : kit_.libs) {
         std::error_code error;
         const auto time = fs::last_write_time(lib, error);
@@ -798,7 +793,6 @@ std::string Grader::build(const std::string& source, int job, const fs::path& wo
     // Where the program finds its shaders without --shader-dir: the submission's own folder inside
     // the sandbox (it does not exist outside it).
     argv.push_back("-DT10_STAGE_SHADER_DIR=\"/submission\"");
-    if (captures) argv.insert(argv.end(), {"-DrunStage=gradeRunStage", run.path("/t10/grade/pass_capture.cpp")});
     // The submission's own file, so that the compiler's messages name it.
     argv.insert(argv.end(), {run.path("/submission/Tutorial10.cpp"), "-o", run.path("/out/student")});
     for (std::size_t i = 0; i < kit_.libs.size(); ++i) {
@@ -1006,6 +1000,8 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
         for (const std::string& a : caseArgs(spec, run.path("/t10/inputs"))) argv.push_back(a);
         argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
                                  run.path("/out/frame.png")});
+        // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
+        if (config_.part == 3) argv.insert(argv.end(), {"--capture-passes", run.path("/out")});
         const RunResult result = runSandboxed(run, argv, (logs / "run.log").string());
         if (!result.ok()) {
             const std::string& o = result.output;

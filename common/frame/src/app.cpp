@@ -96,6 +96,7 @@ App::App(const Stage& stage, const Settings& settings, Context& context)
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
     }
     if (stage_.timers != nullptr) stage_.timers->create();
+    if (!settings_.outputs.capturePassesDir.empty()) observer_ = makePassCapture(settings_.outputs.capturePassesDir);
 }
 
 void App::loadScene() {
@@ -158,7 +159,14 @@ void App::renderFrame() {
     }
     rebuildRequested_ = false;
     if (stage_.timers != nullptr) stage_.timers->beginFrame();
-    stage_.render(*this);
+    if (observer_ != nullptr) {
+        DrawObservation draws(*observer_);
+        observer_->beginRender();
+        stage_.render(*this);
+        observer_->endRender();
+    } else {
+        stage_.render(*this);
+    }
     if (stage_.timers != nullptr) stage_.timers->endFrame();
 }
 

@@ -5,7 +5,8 @@
 #include "t10/gl.hpp"
 #include "t10/readback.hpp"
 #include "t10/scene_key.hpp"
-#include "t10/views.hpp"
+
+#include "reference.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -31,7 +32,7 @@ std::optional<BlackShare> measureBlackShare() {
     std::size_t black = 0;
     std::size_t counted = 0;
     for (const float texel : level.data) {
-        const double y = rangeMapped ? views::keyFromMapped(texel, contract::kWhitePoint) : std::exp(double(texel));
+        const double y = rangeMapped ? ref::keyFromMapped(texel) : std::exp(double(texel));
         if (!std::isfinite(y)) continue; // a non-finite pixel is the nan view's business, not this one's
         const double lnY = std::log(y);
         ++counted;

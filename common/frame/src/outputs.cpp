@@ -66,8 +66,11 @@ void addOutputOptions(CLI::App& cli, OutputSettings& settings) {
     CLI::Option* dump = group->add_option("--dump", settings.dumpDir,
                                           "After the last frame, write every level of the textures on units "
                                           "15-17 (contract.hpp) as PFM files into DIR (for numeric checks)");
-    group->callback([&settings, output, exr, dump] {
-        refuseEmpty({output, exr, dump});
+    CLI::Option* capture = group->add_option("--capture-passes", settings.capturePassesDir,
+                                             "During every frame, write each Gaussian blur pass as it is drawn into DIR "
+                                             "(blur_passNN.pfm, listed in blur_passes.txt; for t10-grade)");
+    group->callback([&settings, output, exr, dump, capture] {
+        refuseEmpty({output, exr, dump, capture});
         if (!settings.output.empty() && !hasSuffix(settings.output, ".png")) {
             throw UsageError("--output " + settings.output + ": the file name must end in .png");
         }

@@ -4,7 +4,8 @@
 #include "t10/contract.hpp"
 #include "t10/gl.hpp"
 #include "t10/readback.hpp"
-#include "t10/view_catalogue.hpp"
+
+#include "reference.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ std::optional<SceneKey> readSceneKey() {
             k.stored = last.data[0];
             k.rangeMapped = format != GL_R16F;
             // GL_R16 holds the range mapping of steps 5 and 9 (undone with the tutorial's white point).
-            k.ya = k.rangeMapped ? views::keyFromMapped(k.stored, contract::kWhitePoint) : std::exp(k.stored);
+            k.ya = k.rangeMapped ? ref::keyFromMapped(k.stored) : std::exp(k.stored);
             key = k;
         }
     }

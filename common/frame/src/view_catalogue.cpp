@@ -1,6 +1,8 @@
 // The catalogue of views and their encodings; see view_catalogue.hpp.
 #include "t10/view_catalogue.hpp"
 
+#include "reference.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +12,13 @@ namespace {
 
 constexpr std::array<const char*, kViewCount> kNames = {"final",  "hdr",  "luminance", "key", "bloom0",
                                                         "bloom1", "blur", "ev",        "nan"};
+
+// The reference's settings with the chain's white point (extras' fYwhite); the rest the tutorial's.
+ref::Settings atWhitePoint(double ywhite) {
+    ref::Settings settings;
+    settings.whitePoint = ywhite;
+    return settings;
+}
 
 } // namespace
 
@@ -55,20 +64,17 @@ Rgb colourScale(double t) {
     return colour;
 }
 
-double rangeMap(double y, double ywhite) {
-    return (std::log(y + kEpsilon) - std::log(kEpsilon)) / (std::log(ywhite) - std::log(kEpsilon));
-}
+double rangeMap(double y, double ywhite) { return ref::rangeMappedLogLuminance(y, atWhitePoint(ywhite)); }
 
-double keyFromMapped(double mapped, double ywhite) {
-    return std::exp(mapped * (std::log(ywhite) - std::log(kEpsilon)) + std::log(kEpsilon));
-}
+double keyFromMapped(double mapped, double ywhite) { return ref::keyFromMapped(mapped, atWhitePoint(ywhite)); }
 
-double middleGrey(double key) { return 1.03 - 2.0 / (2.0 + std::log10(key + 1.0)); }
+double middleGrey(double key) { return ref::middleGrey(key); }
 
 EvClass classifyEv(double y, double key, double ywhite) {
-    const double yr = middleGrey(key) / key * y;
+    const ref::Settings settings = atWhitePoint(ywhite);
+    const double yr = ref::middleGrey(key, settings) / key * y;
     if (yr >= ywhite) return {EvKind::Burnt, kEvHighest};
-    const double displayed = yr * (1.0 + yr / (ywhite * ywhite)) / (1.0 + yr);
+    const double displayed = ref::toneMapLuminance(y, key, settings); // 0 for y <= 0 or NaN: black
     if (!(displayed >= 0.5 / 255.0)) return {EvKind::Black, kEvLowest};
     const int stop = std::clamp(static_cast<int>(std::floor(std::log2(y / key))), kEvLowest, kEvHighest);
     return {displayed > y ? EvKind::Lifted : EvKind::Compressed, stop};

@@ -3,12 +3,14 @@
 // App owns the scene, the camera and the quad, calls the stage's GL_Init / GL_Render / GL_Quit,
 // follows resizes and rebuild requests, and hands the rest to services: camera_input (keys and
 // mouse), outputs (the files after the last frame), bench (--bench), views (--view, drawn over the
-// stage's frame before the UI) and the stage's UI host.
+// stage's frame before the UI) and the stage's UI host. A FrameObserver (frame_observer.hpp, the
+// capture hook) sees the stage's render and each of its draws.
 // A stage's main() is one call to runStage().
 #pragma once
 #include "t10/camera.hpp"
 #include "t10/camera_input.hpp"
 #include "t10/context.hpp"
+#include "t10/frame_observer.hpp"
 #include "t10/framebuffer.hpp"
 #include "t10/gl_errors.hpp"
 #include "t10/quad.hpp"
@@ -48,11 +50,14 @@ public:
     // The stage's size-independent settings changed what GL_Init makes (extras' luminance format):
     // GL_Quit, then GL_Init at the current size, before the next frame.
     void requestRebuild() { rebuildRequested_ = true; }
+    // The capture hook: `observer` sees every later frame's render and its draws (nullptr: none).
+    // --capture-passes DIR installs the pass capture here.
+    void setObserver(std::unique_ptr<FrameObserver> observer) { observer_ = std::move(observer); }
 
     // Renders until the frame count is reached or the window closes; returns the exit code.
     int run();
     // One frame of the stage into framebuffer 0: a requested rebuild, then GL_Render inside the
-    // stage's pass timers. No input, UI, outputs or swap (the bench driver is handed exactly this).
+    // stage's pass timers (and inside the observer's hooks, if one is set). No input, UI, outputs or swap (the bench driver is handed exactly this).
     void renderFrame();
 
 private:
@@ -84,6 +89,7 @@ private:
     std::unique_ptr<GlErrorLog> glErrors_;
     std::unique_ptr<ViewService> views_;
     std::unique_ptr<ViewKeys> viewKeys_;
+    std::unique_ptr<FrameObserver> observer_;
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).

@@ -21,7 +21,6 @@ std::string allViewNames();
 
 namespace views {
 
-constexpr double kEpsilon = contract::kEpsilon;
 constexpr double kYwhite = contract::kWhitePoint;
 constexpr double kBloomThreshold = contract::kBloomThresholdFactor * contract::kWhitePoint;
 
@@ -41,10 +40,11 @@ using Rgb = std::array<double, 3>;
 const std::array<Rgb, kScaleStops>& colourScaleStops();
 Rgb colourScale(double t); // t clamped to [0, 1]
 
-// The luminance view shows the range-mapped log luminance (step 5) on the colour scale.
+// The luminance view shows the range-mapped log luminance (step 5) on the colour scale. These are
+// the CPU reference's functions (common/reference/) at the chain's white point, not copies of them.
 double rangeMap(double y, double ywhite = kYwhite);
 double keyFromMapped(double mapped, double ywhite = kYwhite);
-// Middle grey dg of step 9 from the scene key Ya.
+// Middle grey dg of step 9 from the scene key Ya (ref::middleGrey).
 double middleGrey(double key);
 
 // The ev view: each pixel's HDR luminance in whole stops around the key Ya, one colour-scale band
