@@ -8,7 +8,10 @@ usage: summary.py REPORT.json [--site-url URL]
 Reads only what report.json has today (status, score, message, checks[] with id, passed, steps,
 measured, tolerance, diagnosis) and prefers, where a newer grader writes them, `fix_first`,
 `summary`, per-step entries in `steps` and `mistakes` with their estimates. A field that is missing
-or of an unexpected shape is passed over, never a crash. Exit 0 only for status graded at score 100;
+or of an unexpected shape is passed over, never a crash. One line per fact: the grader's `summary` and
+`fix_first` repeat the failed check's diagnosis and are shown only where they add to it; estimates
+give the tutorial's value as the grader has it (0.2126, not 0.213) and the student's to the same
+number of decimals. Exit 0 only for status graded at score 100;
 1 otherwise; 2 when the report cannot be read.
 """
 import argparse
@@ -87,8 +90,40 @@ def views_for(check_id):
     return ""
 
 
+def plural(words):
+    """'luminance weights' and 'blur passes' are plural, 'white point' and 'blur sigma' are not."""
+    last = words.split()[-1] if words.split() else ""
+    return last.endswith("s") and not last.endswith("ss")
+
+
+def decimals(number):
+    """How many decimals `number` is written with (0.2126 -> 4, 2.5 -> 1, 5 -> 0); None for 1e-08."""
+    written = repr(number) if isinstance(number, float) else str(number)
+    if "e" in written or "E" in written:
+        return None
+    return len(written.split(".")[1]) if "." in written else 0
+
+
+def written(value, like=None):
+    """A value (a number or a list of them) as text: the tutorial's as it is written, the student's to
+    the same precision as the tutorial's value at the same place (`like`)."""
+    if isinstance(value, list):
+        likes = like if isinstance(like, list) and len(like) == len(value) else [None] * len(value)
+        parts = [written(v, l) for v, l in zip(value, likes)]
+        return "(" + ", ".join(parts) + ")" if all(parts) else ""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return text(value)
+    if like is None or isinstance(like, bool) or not isinstance(like, (int, float)):
+        return f"{value:g}" if isinstance(value, float) else str(value)
+    places = decimals(like)
+    if places is None:  # written with an exponent (1e-08): the same significant digits
+        digits = len(f"{like:e}".split("e")[0].replace(".", "").replace("-", "").rstrip("0")) or 1
+        return f"{value:.{digits}g}"
+    return f"{value:.{places}f}"
+
+
 def estimates(check):
-    """Lines like 'your white_point measures 0.25; the tutorial's is 0.22' from `mistakes`."""
+    """Lines like 'your white point measures 0.25; the tutorial's is 0.22' from `mistakes`."""
     lines = []
     mistakes = check.get("mistakes")
     if not isinstance(mistakes, list):
@@ -97,10 +132,16 @@ def estimates(check):
         if not isinstance(m, dict):
             continue
         estimate = m.get("estimate")
-        if isinstance(estimate, dict) and text(estimate.get("parameter")) and text(estimate.get("value")):
-            line = f"your {text(estimate['parameter'])} measures {text(estimate['value'])}"
-            if text(estimate.get("tutorial")):
-                line += f"; the tutorial's is {text(estimate['tutorial'])}"
+        if isinstance(estimate, dict) and text(estimate.get("parameter")):
+            tutorial = estimate.get("tutorial")
+            value = written(estimate.get("value"), tutorial)
+            if not value:
+                continue
+            words = text(estimate["parameter"]).replace("_", " ")
+            many = plural(words)
+            line = f"your {words} {'measure' if many else 'measures'} {value}"
+            if written(tutorial):
+                line += f"; the tutorial's {'are' if many else 'is'} {written(tutorial)}"
             lines.append(line)
         elif text(m.get("id")):
             lines.append(f"likely mistake: {text(m['id'])}")
@@ -147,8 +188,10 @@ def summarize(report, report_path, site_url=DEFAULT_SITE_URL):
         head += f", status {status}"
     out.append(head)
 
+    # The grader's own one-line summary repeats the score and what to fix first, which the lines below
+    # say once each: it is shown only when it says something else.
     overall = text(report.get("summary"))
-    if overall:
+    if overall and "fix first" not in overall.lower() and not overall.lower().startswith("score"):
         out.append(overall)
     message = text(report.get("message"))
     if status != "graded":
@@ -182,18 +225,24 @@ def summarize(report, report_path, site_url=DEFAULT_SITE_URL):
             where = span(numbers)
             first = f"Fix first: step {step}" if step is not None else "Fix first"
             out.append(f"{first}: check {cid}" + (f" ({where})" if where else ""))
-            if isinstance(fix_first, str) and text(fix_first):
-                out.append(f"  {text(fix_first)}")
-            elif isinstance(fix_first, dict) and text(fix_first.get("text") or fix_first.get("message")):
-                out.append(f"  {text(fix_first.get('text') or fix_first.get('message'))}")
+            # One line per fact: the diagnosis once; the grader's fix-first text only where it adds to it.
+            diagnosis = text(check.get("diagnosis"))
+            if diagnosis:
+                out.append(f"  what:     {diagnosis}")
+            note = fix_first if isinstance(fix_first, str) else (
+                fix_first.get("text") or fix_first.get("message") if isinstance(fix_first, dict) else "")
+            note = text(note)
+            if note.lower().startswith("fix first:"):
+                note = note[len("fix first:"):].strip()
+            if note and (not diagnosis or diagnosis not in note):
+                out.append(f"  {'note' if diagnosis else 'what'}:     {note}")
             if text(check.get("measured")):
                 out.append(f"  measured: {text(check['measured'])}")
             if text(check.get("tolerance")):
                 out.append(f"  expected: {text(check['tolerance'])}")
             for line in estimates(check):
-                out.append(f"  {line}")
-            if text(check.get("diagnosis")):
-                out.append(f"  why:      {text(check['diagnosis'])}")
+                if line.split(";")[0] not in diagnosis:
+                    out.append(f"  {line}")
             if step is not None:
                 out.append(f"  tutorial: {link(step, site_url)}")
             views = views_for(cid)

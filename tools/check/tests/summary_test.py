@@ -54,7 +54,7 @@ class TodaysReports(unittest.TestCase):
         self.assertIn("Fix first: step 6: check pot.frame (steps 6, 7, 8, 9, 10, 19, 20)", text)
         self.assertIn("  measured: pot.frame measured", text)
         self.assertIn("  expected: pot.frame tolerance", text)
-        self.assertIn("  why:      pot.frame diagnosis", text)
+        self.assertIn("  what:     pot.frame diagnosis", text)
         self.assertIn("tutorial10.html#step-6", text)
         self.assertIn("--view final, ev, key", text)
         # The whole-part check comes last, after the ones that name steps.
@@ -113,20 +113,49 @@ class NewerReports(unittest.TestCase):
         self.assertFalse(passed)
         self.assertIn("2 of 16 steps lose points", text)
         self.assertIn("Fix first: step 9: check pot.frame (step 9)", text)
-        self.assertIn("  step 9: the white point", text)
-        self.assertIn("  your white_point measures 0.25; the tutorial's is 0.22", text)
+        self.assertIn("  note:     step 9: the white point", text)
+        self.assertIn("  your white point measures 0.25; the tutorial's is 0.22", text)
         self.assertIn("tutorial10.html#step-9", text)
         self.assertIn("Also failing: pot.key", text)
 
     def test_fix_first_as_text(self):
         text, _ = summarize(report([check("pot.key", [3, 4, 5, 15], False)], fix_first="step 4: epsilon"))
         self.assertIn("Fix first: step 3: check pot.key", text)
-        self.assertIn("  step 4: epsilon", text)
+        self.assertIn("  note:     step 4: epsilon", text)
 
     def test_empty_status(self):
         text, passed = summarize(report([], status="empty"))
         self.assertFalse(passed)
         self.assertIn("none of this part's files", text)
+
+
+class OneLinePerFact(unittest.TestCase):
+    """The shape t10-grade writes: `summary` and `fix_first` repeat the failed check's diagnosis."""
+    def lines(self, diagnosis, estimate):
+        c = check("p1.luminance", [3], False, blames=[3], diagnosis=diagnosis,
+                  mistakes=[{"id": "luminance-weights", "steps": [3], "estimate": estimate}])
+        r = report([c, check("p1.key", [4, 5], True)], score=97,
+                   summary="score 97: steps 3 lose points; fix first: step 3 - p1.luminance: " + diagnosis,
+                   fix_first="fix first: step 3 - p1.luminance: " + diagnosis)
+        return summarize(r)[0]
+
+    def test_the_fix_is_said_once(self):
+        diagnosis = "[luminance-weights] your luminance weights measure (0.2130, 0.7150, 0.0720) (step 3)"
+        text = self.lines(diagnosis, {"parameter": "luminance_weights", "value": [0.213, 0.715, 0.072],
+                                      "tutorial": [0.2126, 0.7152, 0.0722]})
+        self.assertEqual(text.lower().count("fix first"), 1, text)
+        self.assertEqual(text.count("(0.2130, 0.7150, 0.0720)"), 1, text)
+        self.assertIn("Fix first: step 3: check p1.luminance (step 3)", text)
+
+    def test_values_as_the_tutorial_writes_them(self):
+        text = self.lines("", {"parameter": "luminance_weights", "value": [0.21304, 0.71497, 0.07199],
+                               "tutorial": [0.2126, 0.7152, 0.0722]})
+        self.assertIn("your luminance weights measure (0.2130, 0.7150, 0.0720); "
+                      "the tutorial's are (0.2126, 0.7152, 0.0722)", text)
+        text = self.lines("", {"parameter": "epsilon", "value": 1.04e-6, "tutorial": 1e-8})
+        self.assertIn("your epsilon measures 1e-06; the tutorial's is 1e-08", text)
+        text = self.lines("", {"parameter": "blur_sigma", "value": 1.2504, "tutorial": 2.5})
+        self.assertIn("your blur sigma measures 1.3; the tutorial's is 2.5", text)
 
 
 class CommandLine(unittest.TestCase):
