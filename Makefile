@@ -7,11 +7,15 @@ OUT      := out
 STAGES    = $(shell cat $(BUILD)/stages.txt 2>/dev/null)
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
-# Debian 12 packages the build, the tests and the headless renders need (bubblewrap: the grader's sandbox).
+# Debian packages the build and `make run` need (the same names on Debian 12, Debian 13 and Ubuntu 24.04).
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev catch2 libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev libimgui-dev xvfb xauth \
-            jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core bubblewrap
-
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev \
+            libimgui-dev
+# What `make test` needs on top: every program a test runs (time: tests/reliability/measure.sh runs
+# /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
+# xauth: the window tests; the site's tools and fonts) and Catch2. `make run` installs none of them.
+TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml \
+                 jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -43,6 +47,7 @@ help:
 	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
 	@echo "make check PART=1|2|3 [DIR=folder]  build your part, grade it, say what to fix first (exit 0 only at 100)"
 	@echo "make run STAGE=student_partN  run your part (window, or headless into $(OUT)/); any stage name works"
+	@echo "make distro-check DISTRO=bookworm|trixie [MODES=\"root user\"]  make run and make test in a fresh Debian root (mmdebstrap, $(BUILD)/distro-check/)"
 	@echo "make help   this list"
 
 deps:
@@ -52,8 +57,13 @@ deps:
 	    $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 
+# The tests are configured in only when Catch2 is installed (`make test` installs it), so that `make run`
+# needs none of the test packages; a build configured without them gains them when they arrive.
+TESTS_ON = $(shell dpkg-query -W -f='$${Status}' catch2 2>/dev/null | grep -q 'ok installed' && echo ON || echo OFF)
 configure: deps
-	@[ -f $(BUILD)/build.ninja ] || cmake --preset $(PRESET)
+	@if [ ! -f $(BUILD)/build.ninja ]; then cmake --preset $(PRESET) -DT10_BUILD_TESTS=$(TESTS_ON); \
+	elif [ "$(TESTS_ON)" = ON ] && grep -qx 'T10_BUILD_TESTS:BOOL=OFF' $(BUILD)/CMakeCache.txt; then \
+	    echo "Catch2 is installed now: configuring $(BUILD)/ with the tests"; cmake $(BUILD) -DT10_BUILD_TESTS=ON; fi
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -74,8 +84,9 @@ run: build
 	    done; \
 	fi
 
+test: PACKAGES += $(TEST_PACKAGES)
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 bless: build
 	tests/golden/bless.sh $(BIN) $(if $(filter command line,$(origin STAGES)),$(STAGES),$(shell cat $(BUILD)/golden_stages.txt))
@@ -90,7 +101,7 @@ clean:
 # gnuplot draws the plot; only this target needs it.
 bench-passes: PACKAGES += gnuplot-nox
 bench-passes: deps
-	@[ -f build-release/build.ninja ] || cmake --preset release
+	@[ -f build-release/build.ninja ] || cmake --preset release -DT10_BUILD_TESTS=$(TESTS_ON)
 	cmake --build build-release -j $(JOBS) --target extras make_test_images halo_radius
 	tools/bench_passes/bench_passes.sh build-release/bin $(OUT) 10 5 1280x720 3
 
@@ -115,8 +126,13 @@ site-serve: configure
 # of `make test`.
 .PHONY: fuzz fuzz-build
 FUZZ_SECONDS ?= 60
-fuzz-build: PACKAGES += clang libclang-rt-14-dev
+# clang's runtime (libFuzzer and the sanitizers) is packaged per clang major version: libclang-rt-14-dev
+# on Debian 12, -19-dev on Debian 13, -18-dev on Ubuntu 24.04; the name is taken from the clang installed.
+fuzz-build: PACKAGES += clang
 fuzz-build: deps
+	@major=$$(clang --version | sed -n 's/.*clang version \([0-9][0-9]*\)\..*/\1/p' | head -n 1); \
+	[ -n "$$major" ] || { echo "make fuzz-build: cannot read clang's version from clang --version"; exit 1; }; \
+	$(MAKE) --no-print-directory deps PACKAGES="libclang-rt-$$major-dev"
 	@[ -f $(BUILD)/fuzz/build.ninja ] || CC=clang CXX=clang++ cmake -S fuzz -B $(BUILD)/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 	cmake --build $(BUILD)/fuzz -j $(JOBS)
 
@@ -127,17 +143,18 @@ fuzz: fuzz-build
 # build-asan/). Mesa's own leaks are suppressed by library (tests/sanitizers/lsan.supp); a test
 # proves a leak in project code still fails. Not part of `make test`.
 .PHONY: test-asan
+test-asan: PACKAGES += $(TEST_PACKAGES)
 test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
-	cd build-asan && ctest --output-on-failure -j $(JOBS)
+	cd build-asan && ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 # `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
 # and a key-once final pass, and the key three ways with its error, at 320x180 .. 3840x2160 in a
 # release build (build-release/). Prints the tables; writes CSV, report.txt and bench.png into
 # $(OUT)/bench/. BENCH_ARGS passes options (e.g. BENCH_ARGS="--sizes 640x360,1280x720 --repeats 3").
 .PHONY: bench
-bench: PACKAGES += gnuplot-nox
+bench: PACKAGES += gnuplot-nox catch2
 bench: deps
 	@[ -f build-release/build.ninja ] || cmake --preset release
 	cmake --build build-release -j $(JOBS) --target t10-bench
@@ -149,7 +166,7 @@ bench: deps
 # (tools/bench_gltf_load; not a test). The loader must stay under 2 s on the 2-core CI machine.
 .PHONY: bench-gltf
 bench-gltf: deps
-	@[ -f build-release/build.ninja ] || cmake --preset release
+	@[ -f build-release/build.ninja ] || cmake --preset release -DT10_BUILD_TESTS=$(TESTS_ON)
 	cmake --build build-release -j $(JOBS) --target make_gltf_fixtures bench_gltf_load
 	build-release/bin/make_gltf_fixtures --big 1000000 build-release/bench/million.glb
 	build-release/bin/bench_gltf_load build-release/bench/million.glb 5
@@ -194,6 +211,8 @@ grade-deps: deps
 grade-args:
 	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)" ] || { echo 'usage: make grade PART=1|2|3 SUBMISSIONS="dir ..." [REPORT=dir] [GRADE_JOBS=N]'; exit 2; }
 
+# The grader is built with the tests (their CPU reference): Catch2 and its sandbox, bubblewrap.
+grade check: PACKAGES += catch2 bubblewrap
 grade: grade-args build grade-deps
 	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
 
@@ -256,7 +275,8 @@ run-stage:
 # installs and builds only what grading needs (t10-grade, the reference stages, FLIP); `make gradescope
 # PART=N` packs out/gradescope/partN/autograder.zip; `make prairielearn PART=N` writes
 # out/prairielearn/partN/ (the entrypoint and an info.json snippet).
-GRADER_PACKAGES := $(filter-out jekyll ruby-html-proofer chromium libjs-katex fonts-katex python3-pygments xvfb xauth,$(PACKAGES)) python3-venv
+# The grader is built with the tests (it reuses their CPU reference), so it needs Catch2; bubblewrap is its sandbox.
+GRADER_PACKAGES := $(PACKAGES) catch2 bubblewrap python3-venv
 .PHONY: grader gradescope prairielearn platform-part
 grader: PACKAGES := $(GRADER_PACKAGES)
 grader: configure grade-deps
@@ -271,5 +291,11 @@ gradescope: platform-part
 prairielearn: platform-part
 	python3 tools/grade/platforms/package.py prairielearn $(PART) . $(OUT)/prairielearn/part$(PART)
 
-# The platforms' tests validate the Classroom workflow's YAML.
-test: PACKAGES += python3-yaml
+# `make distro-check DISTRO=bookworm|trixie [MODES="root user"]` (tools/distro_check/): `make run` and
+# `make test` from a clone of this checkout's HEAD in a fresh minimal Debian root (mmdebstrap, cached in
+# $(BUILD)/distro-check/), as root and as a user with sudo. Not part of `make test`; run it for trixie
+# before resolving an issue that touches CMake, packages or a third-party API.
+.PHONY: distro-check
+distro-check: PACKAGES := mmdebstrap
+distro-check: deps
+	tools/distro_check/distro_check.sh "$(DISTRO)" "$(or $(MODES),root user)" . $(BUILD)/distro-check

@@ -64,7 +64,7 @@ add_test(NAME "dump: extras_bench"
 set_tests_properties("dump: extras_bench" PROPERTIES FIXTURES_SETUP extras_dumps)
 
 add_executable(t10_extras_tests numeric/test_extras.cpp)
-target_link_libraries(t10_extras_tests PRIVATE t10_reference t10_flags Catch2::Catch2WithMain)
+target_link_libraries(t10_extras_tests PRIVATE t10_reference t10_flags t10_catch)
 # Part 1 and Part 3 dumps (fixture dumps, tests/CMakeLists.txt) are compared with extras' own.
 catch_discover_tests(t10_extras_tests TEST_SPEC "~[window]" TEST_PREFIX "extras: "
                      PROPERTIES FIXTURES_REQUIRED extras_dumps ENVIRONMENT T10_DUMP_DIR=${DUMPS})

@@ -86,7 +86,7 @@ t10_add_nan_view(part1_inf tutorial10_part1_tonemap inf.exr)
 t10_add_nan_view(part3_inf tutorial10_part3_gaussian inf.exr)
 
 add_executable(t10_views_tests views/test_views.cpp)
-target_link_libraries(t10_views_tests PRIVATE t10_reference t10_flags Catch2::Catch2WithMain)
+target_link_libraries(t10_views_tests PRIVATE t10_reference t10_flags t10_catch)
 catch_discover_tests(t10_views_tests TEST_PREFIX "views: "
                      PROPERTIES FIXTURES_REQUIRED views ENVIRONMENT T10_DUMP_DIR=${VIEWS})
 

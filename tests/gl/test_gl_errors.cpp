@@ -6,7 +6,7 @@
 #include "t10/gl.hpp"
 #include "t10/gl_errors.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <memory>
 

@@ -9,7 +9,7 @@
 #include "t10/gl_errors.hpp"
 #include "t10/readback.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <memory>
 #include <optional>

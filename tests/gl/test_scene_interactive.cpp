@@ -9,7 +9,7 @@
 #include "t10/readback.hpp"
 #include "t10/scene.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <memory>
 

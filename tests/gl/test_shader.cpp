@@ -5,7 +5,7 @@
 #include "t10/shader.hpp"
 #include "t10/texture.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <filesystem>
 #include <fstream>

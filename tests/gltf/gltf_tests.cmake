@@ -10,7 +10,7 @@ add_test(NAME "gltf: write the fixtures" COMMAND ${BIN}/make_gltf_fixtures ${GLT
 set_tests_properties("gltf: write the fixtures" PROPERTIES FIXTURES_SETUP gltf_fixtures)
 
 add_executable(t10_gltf_tests gltf/test_gltf_loader.cpp)
-target_link_libraries(t10_gltf_tests PRIVATE t10_common t10_flags Catch2::Catch2WithMain)
+target_link_libraries(t10_gltf_tests PRIVATE t10_common t10_flags t10_catch)
 target_compile_definitions(t10_gltf_tests PRIVATE T10_TEST_FIXTURE_DIR="${CMAKE_CURRENT_SOURCE_DIR}/fixtures")
 catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
                      PROPERTIES FIXTURES_REQUIRED gltf_fixtures ENVIRONMENT T10_GLTF_FIXTURES=${GLTF_FIXTURES})
@@ -34,7 +34,7 @@ foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "
     endforeach()
 endforeach()
 add_executable(t10_gltf_render_tests gltf/test_gltf_render.cpp)
-target_link_libraries(t10_gltf_render_tests PRIVATE t10_common t10_flags Catch2::Catch2WithMain)
+target_link_libraries(t10_gltf_render_tests PRIVATE t10_common t10_flags t10_catch)
 catch_discover_tests(t10_gltf_render_tests TEST_PREFIX "gltf measured: "
                      PROPERTIES FIXTURES_REQUIRED gltf_renders
                      ENVIRONMENT T10_GLTF_DIR=${CMAKE_CURRENT_BINARY_DIR}/gltf)

@@ -5,7 +5,7 @@
 #include "t10/error.hpp"
 #include "t10/gltf_scene.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cstdlib>
 #include <regex>

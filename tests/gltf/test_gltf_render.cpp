@@ -6,7 +6,7 @@
 #include "t10/gltf_scene.hpp"
 #include "t10/image_io.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cstdlib>
 #include <string>

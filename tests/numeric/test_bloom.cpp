@@ -4,7 +4,7 @@
 #include "dumps.hpp"
 #include "reference.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cmath>
 #include <iostream>

@@ -17,7 +17,7 @@
 
 #include "t10/image_io.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cmath>
 #include <cstdlib>

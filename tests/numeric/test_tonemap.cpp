@@ -6,7 +6,7 @@
 #include "dumps.hpp"
 #include "reference.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cmath>
 #include <iostream>

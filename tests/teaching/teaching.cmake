@@ -4,7 +4,7 @@
 # the EXR.
 set(TEACHING_DUMPS ${DUMPS}/teaching)
 add_executable(t10_teaching_tests teaching/test_teaching.cpp)
-target_link_libraries(t10_teaching_tests PRIVATE t10_reference t10_flags Catch2::Catch2WithMain)
+target_link_libraries(t10_teaching_tests PRIVATE t10_reference t10_flags t10_catch)
 
 # "dark" shows no source: Parts 0 and 1 are enough for the exposure check.
 foreach(preset default lights dark)

@@ -6,7 +6,7 @@
 #include "t10/json.hpp"
 #include "t10/stats.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <filesystem>
 #include <string>

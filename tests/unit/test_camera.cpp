@@ -3,7 +3,7 @@
 // and the named presets.
 #include "t10/camera.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "t10/error.hpp"
 #include "t10/settings.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <iostream>
 #include <sstream>

@@ -2,7 +2,7 @@
 // measurement itself is checked through the programs (tests/gltf/gltf_tests.cmake).
 #include "t10/exposure_check.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 TEST_CASE("the black-background warning fires from a fifth of the frame, with the keys", "[exposure]") {
     t10::BlackShare m;

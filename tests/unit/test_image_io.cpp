@@ -7,7 +7,7 @@
 #include "t10/file.hpp"
 #include "t10/image_io.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -8,7 +8,7 @@
 #include "t10/file.hpp"
 #include "t10/tga.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <chrono>
 #include <cstdint>

@@ -10,7 +10,7 @@
 #include "t10/image_io.hpp"
 #include "t10/view_catalogue.hpp"
 
-#include <catch2/catch.hpp>
+#include "t10_catch.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,9 +11,24 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace t10::gltf {
+
+// tinygltf 2.8.13 and later (Debian 13: 2.9) keep a node's light in Node::light and write the node's
+// KHR_lights_punctual extension from it, dropping an extension set by hand when Node::light is -1;
+// 2.7 (Debian 12) has no such field and writes the extension as given. setNodeLight sets the field
+// where it exists, so that both write the same file.
+template <typename N, typename = void>
+struct HasLightField : std::false_type {};
+template <typename N>
+struct HasLightField<N, std::void_t<decltype(std::declval<N&>().light)>> : std::true_type {};
+
+template <typename N>
+void setNodeLight(N& node, int light) {
+    if constexpr (HasLightField<N>::value) node.light = light;
+}
 
 class Builder {
 public:
@@ -174,7 +189,9 @@ public:
         model.lights.push_back(l);
         tinygltf::Value::Object ext;
         ext["light"] = tinygltf::Value(static_cast<int>(model.lights.size() - 1));
-        model.nodes[static_cast<std::size_t>(nodeIndex)].extensions["KHR_lights_punctual"] = tinygltf::Value(ext);
+        tinygltf::Node& node = model.nodes[static_cast<std::size_t>(nodeIndex)];
+        node.extensions["KHR_lights_punctual"] = tinygltf::Value(ext); // tinygltf 2.7 writes this
+        setNodeLight(node, static_cast<int>(model.lights.size() - 1)); // 2.8.13+ writes from this
     }
 
     // Writes `path`: .glb puts buffer 0 into the binary chunk; .gltf writes it next to the file as

@@ -670,6 +670,7 @@ void schema(const fs::path& dir) {
         {"light_type", "/extensions/KHR_lights_punctual/lights/0/type", "area"},
         {"texture_info_index", "/textures/0/source", 4},
         {"scene_index", "/scene", 1},
+        {"scene_name_number", "/scenes/0/name", 1},
         {"children_index", "/nodes/0/children", {-1}},
     };
     for (const Change& c : changes) {

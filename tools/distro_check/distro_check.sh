@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# make distro-check DISTRO=bookworm|trixie [MODES="root user"]: the README's two commands, `make run` and
+# `make test`, run as a new user would in a fresh minimal Debian root: built once with mmdebstrap from
+# Debian's archive and cached as CACHE/<distro>/base.tar, unpacked anew for each mode, with a clone of
+# the checkout (its committed HEAD) in it. Mode `root` runs them as root from /root/tutorial10; mode `user`
+# as the user `student` (sudo without a password) from /home/student/tutorial10. Prints each command's
+# exit status and time, and ctest's summary; the logs and the unpacked roots stay in CACHE/<distro>/.
+#
+# The root is entered with pivot_root in new mount and PID namespaces, not chroot: the kernel refuses
+# user namespaces (bwrap, the grader's sandbox) to a chrooted process. It shares the host's network and
+# gets the host's CA bundle, apt Acquire settings and pip configuration (/etc/pip.conf and the PIP_*
+# variables), so that it reaches the same registries as the host.
+# usage: distro_check.sh DISTRO "MODES" SOURCE_CHECKOUT CACHE_DIR
+set -euo pipefail
+
+distro=${1:-} modes=${2:-root user} source=${3:-.} cache=${4:-build/distro-check}
+case "$distro" in
+    bookworm|trixie) ;;
+    *) echo "distro-check: DISTRO='$distro': choose bookworm (Debian 12) or trixie (Debian 13)" >&2; exit 2 ;;
+esac
+for mode in $modes; do
+    case "$mode" in root|user) ;; *) echo "distro-check: MODES: '$mode' is neither root nor user" >&2; exit 2 ;; esac
+done
+[ "$(id -u)" -eq 0 ] || { echo "distro-check: needs root (mmdebstrap, mount namespaces, pivot_root)" >&2; exit 2; }
+command -v mmdebstrap >/dev/null || { echo "distro-check: mmdebstrap is not installed (make distro-check installs it)" >&2; exit 2; }
+source=$(cd "$source" && git rev-parse --show-toplevel) || { echo "distro-check: $3: not a git checkout" >&2; exit 2; }
+mkdir -p "$cache/$distro"
+work=$(cd "$cache/$distro" && pwd -P)
+
+# The host's apt Acquire settings (proxies, date checks) for mmdebstrap and for apt inside the root.
+apt-config dump | grep -E '^Acquire::' >"$work/host-apt.conf" || true
+
+base=$work/base.tar
+if [ ! -f "$base" ]; then
+    echo "distro-check: building a minimal $distro root with mmdebstrap into $base"
+    start=$(date +%s)
+    # minbase: Essential packages and apt. make is what the README's commands are typed into;
+    # ca-certificates so that https works; sudo for the user mode. Everything else the project needs
+    # must come from its own `make` targets.
+    mmdebstrap --variant=minbase --include=make,ca-certificates,sudo --aptopt="$work/host-apt.conf" \
+        "$distro" "$base.tmp" || { rm -f "$base.tmp"; echo "distro-check: mmdebstrap failed" >&2; exit 1; }
+    mv "$base.tmp" "$base"
+    echo "distro-check: root built in $(( $(date +%s) - start )) s"
+fi
+mkdir -p "$work/apt-archives"
+
+# The environment the commands run with: a login's, plus the host's pip and CA variables.
+passenv=(HOME="" PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 TERM=dumb)
+while IFS='=' read -r name value; do
+    case "$name" in
+        PIP_*|SSL_CERT_FILE|SSL_CERT_DIR|REQUESTS_CA_BUNDLE|CURL_CA_BUNDLE|GIT_SSL_CAINFO|http_proxy|https_proxy|no_proxy|HTTP_PROXY|HTTPS_PROXY|NO_PROXY)
+            passenv+=("$name=$value") ;;
+    esac
+done < <(env)
+
+# enter ROOT USER COMMAND: run COMMAND (a bash command line) in ROOT as USER (root or student).
+enter() {
+    local root=$1 user=$2 command=$3 home=/root
+    [ "$user" = root ] || home=/home/$user
+    unshare --mount --pid --fork --propagation private -- /bin/bash -s "$root" "$user" "$home" "$command" "${passenv[@]}" <<'INNER'
+set -eu
+root=$1 user=$2 home=$3 command=$4
+shift 4
+mount --bind "$root" "$root"
+mount -t proc proc "$root/proc"
+mount --rbind /dev "$root/dev"
+mount --rbind /sys "$root/sys"
+mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
+mount --bind "$(dirname "$root")/apt-archives" "$root/var/cache/apt/archives"
+# The host's CA bundle, resolver and pip configuration (copied, so the root's own files stay its own).
+cp -L /etc/resolv.conf "$root/etc/resolv.conf"
+mkdir -p "$root/etc/ssl/certs"
+cp -L /etc/ssl/certs/ca-certificates.crt "$root/etc/ssl/certs/ca-certificates.crt"
+[ ! -f /etc/pip.conf ] || cp -L /etc/pip.conf "$root/etc/pip.conf"
+if [ -n "${PIP_FIND_LINKS:-}" ] && [ -d "$PIP_FIND_LINKS" ]; then
+    mkdir -p "$root$PIP_FIND_LINKS" && mount --bind -o ro "$PIP_FIND_LINKS" "$root$PIP_FIND_LINKS"
+fi
+cd "$root"
+mkdir -p .host
+pivot_root . .host
+umount -l /.host
+rmdir /.host
+cd /
+env=()
+for kv in "$@"; do
+    case "$kv" in HOME=*) env+=("HOME=$home") ;; *) env+=("$kv") ;; esac
+done
+[ "$user" = root ] || env+=("USER=$user" "LOGNAME=$user")
+if [ "$user" = root ]; then exec env -i "${env[@]}" /bin/bash -c "cd && $command"; fi
+exec runuser -u "$user" -- env -i "${env[@]}" /bin/bash -c "cd && $command"
+INNER
+}
+
+# run MODE LABEL COMMAND: one timed command, its output into the mode's log; prints status and time.
+status=0
+run() {
+    local mode=$1 label=$2 command=$3 user=root start rc ms
+    [ "$mode" = root ] || user=student
+    start=$(date +%s%N)
+    set +e
+    enter "$work/root-$mode" "$user" "$command" >>"$work/$mode.log" 2>&1
+    rc=$?
+    set -e
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    printf 'distro-check: %s, %s: %-10s exit %d, %d.%d s\n' "$distro" "$mode" "$label" "$rc" $((ms / 1000)) $((ms % 1000 / 100))
+    return $rc
+}
+
+for mode in $modes; do
+    root=$work/root-$mode
+    log=$work/$mode.log
+    rm -rf "$root" && mkdir -p "$root"
+    tar -C "$root" -xf "$base"
+    cp "$work/host-apt.conf" "$root/etc/apt/apt.conf.d/00host-acquire"
+    : >"$log"
+    if [ "$mode" = user ]; then
+        useradd --root "$root" --create-home --shell /bin/bash --groups sudo student
+        echo 'student ALL=(ALL) NOPASSWD: ALL' >"$root/etc/sudoers.d/student"
+        chmod 0440 "$root/etc/sudoers.d/student"
+        home=$root/home/student
+    else
+        home=$root/root
+    fi
+    git clone --quiet --no-hardlinks "$source" "$home/tutorial10"
+    [ "$mode" = root ] || chown -R "$(grep '^student:' "$root/etc/passwd" | cut -d: -f3,4)" "$home"
+    echo "distro-check: $distro, $mode: $(git -C "$home/tutorial10" log -1 --format='%h %s'), log $log"
+    run "$mode" "make run" "cd tutorial10 && make run" || status=1
+    run "$mode" "make test" "cd tutorial10 && make test" || status=1
+    summary=$(grep -E 'tests passed|tests failed out of|Total Test time' "$log" | tail -n 2 || true)
+    echo "${summary:-(no ctest summary in the log)}" | sed "s/^/distro-check: $distro, $mode: /"
+    grep -E '^\s+[0-9]+ - .*\((Failed|Timeout|SEGFAULT|Not Run|Subprocess aborted)\)' "$log" | sed "s/^/distro-check: $distro, $mode: failed:/" || true
+done
+exit $status
