@@ -23,6 +23,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <type_traits>
 
 namespace t10 {
 
@@ -152,6 +153,47 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
 bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "the loader writes no files\n";
     return false;
+}
+
+// tinygltf 2.8.13 added FsCallbacks::GetFileSizeInBytes (2.9, Debian 13, asks it before reading an
+// external file) and 2.9 made SetFsCallbacks return false, keeping its default callbacks, when any
+// callback is null; 2.7 (Debian 12) has neither. The callbacks are set by name and the size callback
+// only where the field exists; a refusal is an error, never a silent fall-back to tinygltf's own.
+[[maybe_unused]] bool fileSize(std::size_t* size, std::string* err, const std::string& path, void* user) {
+    if (!static_cast<const GltfLoadLimits*>(user)->allowExternalFiles) {
+        if (err) *err += path + ": external files are not read here\n";
+        return false;
+    }
+    std::error_code error;
+    const auto bytes = std::filesystem::file_size(path, error);
+    if (error) {
+        if (err) *err += path + ": cannot read the file's size: " + error.message() + "\n";
+        return false;
+    }
+    *size = static_cast<std::size_t>(bytes);
+    return true;
+}
+
+template <typename C, typename = void>
+struct HasFileSizeCallback : std::false_type {};
+template <typename C>
+struct HasFileSizeCallback<C, std::void_t<decltype(std::declval<C&>().GetFileSizeInBytes)>> : std::true_type {};
+
+// Callbacks is tinygltf::FsCallbacks, a template parameter so that `if constexpr` discards what it lacks.
+template <typename Callbacks, typename Loader>
+void setFsCallbacks(Loader& loader, const GltfLoadLimits& limits) {
+    Callbacks fs{};
+    fs.FileExists = &fileExists;
+    fs.ExpandFilePath = &expandPath;
+    fs.ReadWholeFile = &readWholeFile;
+    fs.WriteWholeFile = &writeWholeFile;
+    if constexpr (HasFileSizeCallback<Callbacks>::value) fs.GetFileSizeInBytes = &fileSize;
+    fs.user_data = const_cast<GltfLoadLimits*>(&limits);
+    if constexpr (std::is_same_v<decltype(loader.SetFsCallbacks(fs)), bool>) {
+        if (!loader.SetFsCallbacks(fs)) fail("tinygltf refused the loader's file callbacks");
+    } else {
+        loader.SetFsCallbacks(fs);
+    }
 }
 
 // --- Accessors: every offset and count checked against the bytes behind it. ---------------------
@@ -997,9 +1039,7 @@ SceneDescription load(const std::uint8_t* bytes, std::size_t size, const std::st
         tinygltf::TinyGLTF loader;
         ImageContext images{&limits};
         loader.SetImageLoader(&loadImage, &images);
-        tinygltf::FsCallbacks fs{&fileExists, &expandPath, &readWholeFile, &writeWholeFile,
-                                 const_cast<GltfLoadLimits*>(&limits)};
-        loader.SetFsCallbacks(fs);
+        setFsCallbacks<tinygltf::FsCallbacks>(loader, limits);
         tinygltf::Model model;
         std::string error;
         std::string warning;
