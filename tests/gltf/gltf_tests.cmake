@@ -87,6 +87,7 @@ foreach(case
         "schema_pbr_not_object.gltf;materials\\[0\\].pbrMetallicRoughness: expected an object"
         "schema_texture_index_negative.gltf;materials\\[0\\].normalTexture.index: expected an integer >= 0, got -1"
         "schema_primitives_object.gltf;meshes\\[0\\].primitives: expected an array, got an object"
+        "schema_scene_name_number.gltf;scenes\\[0\\].name: expected a string, got a number 1"
         "nothing_points.gltf;nothing to draw: the scene's only primitive is points or lines")
     list(GET case 0 file)
     list(GET case 1 message)

@@ -313,6 +313,7 @@ TEST_CASE("wrongly typed or out-of-range properties are refused with their JSON 
         {"light_type.gltf", R"(extensions\.KHR_lights_punctual\.lights\[0\]\.type: expected one of "directional", "point", "spot", got a string "area")"},
         {"texture_info_index.gltf", R"(textures\[0\]\.source: images\[4\] does not exist \(the file has 1\))"},
         {"scene_index.gltf", R"(scene: scenes\[1\] does not exist \(the file has 1\))"},
+        {"scene_name_number.gltf", R"(scenes\[0\]\.name: expected a string, got a number 1)"},
         {"children_index.gltf", R"(nodes\[0\]\.children\[0\]: expected an integer >= 0, got -1)"},
     };
     // The file they are variations of loads: the checks accept every property it uses.

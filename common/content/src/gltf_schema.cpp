@@ -70,6 +70,7 @@ public:
         if (const Json* v = member(root_, "scene")) index(*v, "scene", "scenes");
         forEach(root_, "scenes", [&](const Json& scene, const std::string& path) {
             object(scene, path);
+            optional(scene, path, "name", string);
             forEach(scene, "nodes", [&](const Json& v, const std::string& p) { index(v, p, "nodes"); }, path);
         });
         forEach(root_, "nodes", [&](const Json& v, const std::string& path) { node(v, path); });
