@@ -10,7 +10,7 @@
 # user namespaces (bwrap, the grader's sandbox) to a chrooted process. It shares the host's network and
 # gets the host's CA bundle, apt Acquire settings and pip configuration (/etc/pip.conf and the PIP_*
 # variables), so that it reaches the same registries as the host.
-# usage: distro_check.sh DISTRO "MODES" SOURCE_CHECKOUT CACHE_DIR
+# usage: distro_check.sh DISTRO "MODES" SOURCE_CHECKOUT CACHE_DIR     (MODES=none: only build the root)
 set -euo pipefail
 
 distro=${1:-} modes=${2:-root user} source=${3:-.} cache=${4:-build/distro-check}
@@ -19,7 +19,7 @@ case "$distro" in
     *) echo "distro-check: DISTRO='$distro': choose bookworm (Debian 12) or trixie (Debian 13)" >&2; exit 2 ;;
 esac
 for mode in $modes; do
-    case "$mode" in root|user) ;; *) echo "distro-check: MODES: '$mode' is neither root nor user" >&2; exit 2 ;; esac
+    case "$mode" in root|user|none) ;; *) echo "distro-check: MODES: '$mode' is neither root nor user" >&2; exit 2 ;; esac
 done
 [ "$(id -u)" -eq 0 ] || { echo "distro-check: needs root (mmdebstrap, mount namespaces, pivot_root)" >&2; exit 2; }
 command -v mmdebstrap >/dev/null || { echo "distro-check: mmdebstrap is not installed (make distro-check installs it)" >&2; exit 2; }
@@ -38,11 +38,12 @@ if [ ! -f "$base" ]; then
     # ca-certificates so that https works; sudo for the user mode. Everything else the project needs
     # must come from its own `make` targets.
     mmdebstrap --variant=minbase --include=make,ca-certificates,sudo --aptopt="$work/host-apt.conf" \
-        "$distro" "$base.tmp" || { rm -f "$base.tmp"; echo "distro-check: mmdebstrap failed" >&2; exit 1; }
-    mv "$base.tmp" "$base"
+        --format=tar "$distro" "$work/base.part.tar" || { rm -f "$work/base.part.tar"; echo "distro-check: mmdebstrap failed" >&2; exit 1; }
+    mv "$work/base.part.tar" "$base"
     echo "distro-check: root built in $(( $(date +%s) - start )) s"
 fi
 mkdir -p "$work/apt-archives"
+[ "$modes" != none ] || exit 0 # MODES=none: only build (or keep) the cached root
 
 # The environment the commands run with: a login's, plus the host's pip and CA variables.
 passenv=(HOME="" PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 TERM=dumb)
@@ -121,9 +122,11 @@ for mode in $modes; do
     else
         home=$root/root
     fi
+    # sudo resolves the host name it runs on.
+    echo "127.0.1.1 $(hostname)" >>"$root/etc/hosts"
     git clone --quiet --no-hardlinks "$source" "$home/tutorial10"
-    [ "$mode" = root ] || chown -R "$(grep '^student:' "$root/etc/passwd" | cut -d: -f3,4)" "$home"
     echo "distro-check: $distro, $mode: $(git -C "$home/tutorial10" log -1 --format='%h %s'), log $log"
+    [ "$mode" = root ] || chown -R "$(grep '^student:' "$root/etc/passwd" | cut -d: -f3,4)" "$home"
     run "$mode" "make run" "cd tutorial10 && make run" || status=1
     run "$mode" "make test" "cd tutorial10 && make test" || status=1
     summary=$(grep -E 'tests passed|tests failed out of|Total Test time' "$log" | tail -n 2 || true)
