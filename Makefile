@@ -194,7 +194,7 @@ views: build
 	done; rm -f $(OUT)/views/error.txt $(OUT)/views/out.txt; mv $(OUT)/views/views.txt.tmp $(OUT)/views/views.txt; \
 	echo "  $(OUT)/views/views.txt"
 
-# Grading (tools/grade, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
+# Grading (grader/, for instructors): make grade PART=N SUBMISSIONS="dir1 dir2 ..." [REPORT=dir]
 # [GRADE_JOBS=N]. FLIP, the perceptual image metric the grader compares frames with, is not a Debian
 # package: grade-deps installs the pinned flip-evaluator from PyPI into a venv under build/.
 FLIP_VERSION := 1.7
@@ -271,7 +271,7 @@ run-stage:
 	    $(BIN)/$(STAGE) --headless --frames 1 --output $(OUT)/$(STAGE).png >/dev/null && echo "  $(OUT)/$(STAGE).png"; \
 	fi
 
-# Grading on the platforms courses use (tools/grade/platforms; site/instructors.md): `make grader`
+# Grading on the platforms courses use (grader/platforms; site/instructors.md): `make grader`
 # installs and builds only what grading needs (t10-grade, the reference stages, FLIP); `make gradescope
 # PART=N` packs out/gradescope/partN/autograder.zip; `make prairielearn PART=N` writes
 # out/prairielearn/partN/ (the entrypoint and an info.json snippet).
@@ -286,10 +286,10 @@ platform-part:
 	@case "$(PART)" in 1|2|3) ;; *) echo 'usage: make gradescope|prairielearn PART=1|2|3'; exit 2;; esac
 
 gradescope: platform-part
-	python3 tools/grade/platforms/package.py gradescope $(PART) . $(OUT)/gradescope/part$(PART)
+	python3 grader/platforms/package.py gradescope $(PART) . $(OUT)/gradescope/part$(PART)
 
 prairielearn: platform-part
-	python3 tools/grade/platforms/package.py prairielearn $(PART) . $(OUT)/prairielearn/part$(PART)
+	python3 grader/platforms/package.py prairielearn $(PART) . $(OUT)/prairielearn/part$(PART)
 
 # `make distro-check DISTRO=bookworm|trixie [MODES="root user"]` (tools/distro_check/): `make run` and
 # `make test` from a clone of this checkout's HEAD in a fresh minimal Debian root (mmdebstrap, cached in

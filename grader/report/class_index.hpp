@@ -2,7 +2,7 @@
 // student x step table of failures, a link to each report) and DIR/grades-lms.csv (one row per
 // student id, for an LMS import). Also reads the roster that names submissions by student id.
 #pragma once
-#include "report.hpp"
+#include "report/report.hpp"
 
 #include <map>
 #include <string>

@@ -1,5 +1,5 @@
 // Implementation of the limited child process; see run_limited.hpp.
-#include "run_limited.hpp"
+#include "isolation/run_limited.hpp"
 
 #include "t10/error.hpp"
 

@@ -1,5 +1,5 @@
 # Tests of the platforms' results (formats.*), the class index (class_index.*) and the packaged scripts
-# (platforms/), included from tools/grade/CMakeLists.txt beside tests.cmake, whose test submissions and
+# (platforms/), included from grader/CMakeLists.txt beside tests/tests.cmake, whose test submissions and
 # settings (GRADE_*) they reuse. One batch of four part 3 submissions (correct, mistaken, not building,
 # crashing) is graded with every --format; each format is validated against its platform's contract by
 # tests/platforms/validate_*.py, and each validator is shown to reject broken results. The packaged

@@ -1,6 +1,6 @@
 // Writing the reports and the gradebook; see report.hpp. Files are written to a temporary name and
 // renamed into place, so a report on disk is always complete.
-#include "report.hpp"
+#include "report/report.hpp"
 
 #include "t10/error.hpp"
 

@@ -1,7 +1,7 @@
 // Implementation of the copy-in; see submission_files.hpp. Entries are examined with lstat and opened
 // with O_NOFOLLOW | O_NONBLOCK relative to the folder's descriptor, then checked again with fstat, so
 // that a symlink, a FIFO or a file swapped in between is refused, never followed or waited on.
-#include "submission_files.hpp"
+#include "intake/submission_files.hpp"
 
 #include "t10/error.hpp"
 

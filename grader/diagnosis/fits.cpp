@@ -1,5 +1,5 @@
 // The one-parameter search; see fits.hpp.
-#include "fits.hpp"
+#include "diagnosis/fits.hpp"
 
 #include <cmath>
 

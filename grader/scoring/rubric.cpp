@@ -1,7 +1,7 @@
 // Reading the rubric; see rubric.hpp.
-#include "rubric.hpp"
+#include "scoring/rubric.hpp"
 
-#include "checks.hpp"
+#include "checks/checks.hpp"
 #include "t10/error.hpp"
 
 #include <cerrno>

@@ -4,7 +4,7 @@
 // Memory: there is no cgroup here (the grading machines run cgroup v1 or a read-only cgroup v2), so
 // memory is bounded per process by RLIMIT_AS and across the job by RLIMIT_NPROC times that and the
 // wall clock.
-#include "sandbox.hpp"
+#include "isolation/sandbox.hpp"
 
 #include "t10/error.hpp"
 

@@ -1,7 +1,7 @@
 // The class index and the LMS CSV; see class_index.hpp.
-#include "class_index.hpp"
+#include "report/class_index.hpp"
 
-#include "formats.hpp"
+#include "platforms/formats.hpp"
 
 #include "t10/error.hpp"
 

@@ -1,4 +1,4 @@
-# Tests of the graders (included from tools/grade/CMakeLists.txt). The submissions are written at test
+# Tests of the graders (included from grader/CMakeLists.txt, so CMAKE_CURRENT_SOURCE_DIR is grader/). The submissions are written at test
 # time from the current reference stages by tests/make_submissions.py: each reference, a
 # shaders-only copy of it and an equivalent rewrite must score 100, each known mistake must fail the
 # check of its step with its diagnosis (and, with a value, the value measured within 10 %), Part 1

@@ -7,7 +7,7 @@
 // its fitted model explains them within the check's tolerance; otherwise it says how the buffer is
 // wrong.
 #pragma once
-#include "catalogue.hpp"
+#include "diagnosis/catalogue.hpp"
 #include "dumps.hpp"
 
 #include <string>

@@ -19,7 +19,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from make_submissions import FITTED, OUTSIDE  # noqa: E402  (one table of the values set)
 
-CATALOGUE_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "mistakes.tsv")
+CATALOGUE_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "diagnosis", "mistakes.tsv")
 
 
 def load_catalogue():

@@ -14,10 +14,10 @@
 //
 // Adding a known mistake: a row of mistakes.tsv, a model in the check of the step it breaks, and a
 // submission that makes it (tests/make_submissions.py).
-#include "checks.hpp"
+#include "checks/checks.hpp"
 
 #include "compare.hpp"
-#include "fits.hpp"
+#include "diagnosis/fits.hpp"
 #include "reference.hpp"
 #include "t10/contract.hpp"
 #include "t10/error.hpp"

@@ -5,7 +5,7 @@
 // output). Every platform test is one tutorial step (plus one for the whole frame): stepResults() is
 // the one place that groups the checks and gives each step its points.
 #pragma once
-#include "report.hpp"
+#include "report/report.hpp"
 
 #include <string>
 #include <vector>

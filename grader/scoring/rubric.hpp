@@ -1,4 +1,4 @@
-// The rubric of t10-grade: points per tutorial step, read from tools/grade/rubric.txt (or the file
+// The rubric of t10-grade: points per tutorial step, read from grader/scoring/rubric.txt (or the file
 // T10_GRADE_RUBRIC names), documented in site/instructors.md.
 #pragma once
 #include <map>

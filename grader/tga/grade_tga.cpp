@@ -8,7 +8,7 @@
 // rejected a valid file, crash, hang, accepted a malformed file, rejected (for malformed files).
 // The score is the share of cases passed, rounded down. Exit 0 when every case ran, 1 when the
 // harness failed, 2 on bad usage.
-#include "run_limited.hpp"
+#include "isolation/run_limited.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"

@@ -1,7 +1,7 @@
 // The platforms' result files; see formats.hpp. Contracts as their public documentation states them:
 // Gradescope's autograder results.json, PrairieLearn's external grading results (1 MB at most) and
 // GitHub Classroom's autograding-grading-reporter (a step output holding base64 JSON, version 1).
-#include "formats.hpp"
+#include "platforms/formats.hpp"
 
 #include "t10/error.hpp"
 

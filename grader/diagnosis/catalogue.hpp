@@ -1,4 +1,4 @@
-// The mistake catalogue of t10-grade, read from tools/grade/mistakes.tsv (the one table the grader,
+// The mistake catalogue of t10-grade, read from grader/diagnosis/mistakes.tsv (the one table the grader,
 // its tests and the instructors' page share), and the findings a check reports from it.
 #pragma once
 #include <string>

@@ -14,13 +14,13 @@
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
 // index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
 // report, 1 when the grader failed, 2 on bad usage.
-#include "checks.hpp"
-#include "class_index.hpp"
-#include "formats.hpp"
-#include "report.hpp"
-#include "run_limited.hpp"
-#include "sandbox.hpp"
-#include "submission_files.hpp"
+#include "checks/checks.hpp"
+#include "report/class_index.hpp"
+#include "platforms/formats.hpp"
+#include "report/report.hpp"
+#include "isolation/run_limited.hpp"
+#include "isolation/sandbox.hpp"
+#include "intake/submission_files.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"
@@ -398,7 +398,7 @@ std::string uniqueSuffix() {
     return "." + std::to_string(::getpid()) + "." + std::to_string(counter++);
 }
 
-// The compile and link recipe the build wrote for submissions (tools/grade/CMakeLists.txt).
+// The compile and link recipe the build wrote for submissions (grader/CMakeLists.txt).
 struct HostKit {
     std::string compiler;
     std::vector<std::string> flags, includes, defines, libs;

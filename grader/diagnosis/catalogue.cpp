@@ -1,5 +1,5 @@
 // Reading the mistake catalogue; see catalogue.hpp.
-#include "catalogue.hpp"
+#include "diagnosis/catalogue.hpp"
 
 #include "t10/error.hpp"
 

@@ -1,9 +1,9 @@
 // What t10-grade writes for each submission (report.json, report.html) and for the class
 // (gradebook.csv), and how the score is computed.
 #pragma once
-#include "checks.hpp"
-#include "rubric.hpp"
-#include "submission_files.hpp"
+#include "checks/checks.hpp"
+#include "scoring/rubric.hpp"
+#include "intake/submission_files.hpp"
 
 #include <string>
 #include <vector>
