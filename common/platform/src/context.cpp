@@ -1,16 +1,23 @@
-// Context creation for the three backends. Each makes a GL 4.3 core context current, gives it a
-// default framebuffer of the requested size and loads the glad entry points through its own
+// Context creation for the backends: a GLFW window everywhere, EGL and OSMesa on Linux, a WGL pbuffer
+// on Windows (context_wgl.cpp). Each makes a GL 4.3 core context current, gives it a default
+// framebuffer of the requested size and loads the glad entry points through its own
 // get-proc-address function.
 #include "t10/context.hpp"
+
+#include "context_detail.hpp"
 
 #include "t10/contract.hpp"
 #include "t10/error.hpp"
 #include "t10/gl.hpp"
 
+#include <GLFW/glfw3.h>
+#ifdef T10_HAVE_EGL
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
-#include <GLFW/glfw3.h>
+#endif
+#ifdef T10_HAVE_X11
 #include <X11/Xlib.h>
+#endif
 #ifdef T10_HAVE_OSMESA
 #include <GL/osmesa.h>
 #endif
@@ -25,29 +32,15 @@ namespace t10 {
 
 namespace {
 
-constexpr int kGlMajor = 4;
-constexpr int kGlMinor = 3;
-
-void loadGl(GLADloadfunc loader, const char* backend) {
-    if (gladLoadGL(loader) == 0) {
-        throw Error(std::string(backend) + ": could not load the OpenGL 4.3 entry points");
-    }
-}
-
-bool hasExtension(const char* list, const char* name) {
-    if (list == nullptr) return false;
-    const std::size_t length = std::strlen(name);
-    for (const char* p = list; (p = std::strstr(p, name)) != nullptr; p += length) {
-        const bool startOk = p == list || p[-1] == ' ';
-        const bool endOk = p[length] == ' ' || p[length] == '\0';
-        if (startOk && endOk) return true;
-    }
-    return false;
-}
+using detail::hasExtension;
+using detail::kGlMajor;
+using detail::kGlMinor;
+using detail::loadGl;
 
 // ---------------------------------------------------------------------------------------------
 // GLFW window
 
+#ifdef T10_HAVE_X11
 // Xlib's default error handler ends the process ("BadDrawable") when another client destroys our
 // window. This one only records that an X request failed; the window context then reports itself
 // closed, and the run ends like any other. Xlib's handler takes no user pointer, hence the flag.
@@ -60,6 +53,14 @@ int onXError(Display*, XErrorEvent*) {
     xRequestFailed() = true;
     return 0;
 }
+
+void guardX() { XSetErrorHandler(onXError); }
+bool xFailed() { return xRequestFailed(); }
+#else
+// No X server here (Windows): a window closed from outside goes through GLFW's close flag.
+void guardX() {}
+bool xFailed() { return false; }
+#endif
 
 class WindowContext final : public Context {
 public:
@@ -83,10 +84,10 @@ public:
         glfwMakeContextCurrent(window_);
         glfwSwapInterval(1);
         loadGl(glfwGetProcAddress, "window");
-        XSetErrorHandler(onXError);
+        guardX();
     }
     ~WindowContext() override {
-        XSetErrorHandler(onXError);
+        guardX();
         glfwDestroyWindow(window_);
         glfwTerminate();
     }
@@ -97,28 +98,28 @@ public:
     // GLFW 3.3 puts Xlib's default handler back after some of its own calls: ours is installed
     // again before every call that talks to the X server.
     void swapBuffers() override {
-        XSetErrorHandler(onXError);
+        guardX();
         glfwSwapBuffers(window_);
     }
     void pollEvents() override {
-        XSetErrorHandler(onXError);
+        guardX();
         glfwPollEvents();
-        XSetErrorHandler(onXError);
+        guardX();
     }
     bool shouldClose() const override {
-        if (xRequestFailed() && !glfwWindowShouldClose(window_)) {
+        if (xFailed() && !glfwWindowShouldClose(window_)) {
             std::cerr << "window: an X request failed (the window was destroyed from outside?); closing\n";
             glfwSetWindowShouldClose(window_, GLFW_TRUE);
         }
         return glfwWindowShouldClose(window_) == GLFW_TRUE;
     }
     void framebufferSize(int& width, int& height) const override {
-        XSetErrorHandler(onXError);
+        guardX();
         glfwGetFramebufferSize(window_, &width, &height);
-        if (xRequestFailed()) width = height = 0; // the window is gone: nothing to render into
+        if (xFailed()) width = height = 0; // the window is gone: nothing to render into
     }
     void requestSize(int width, int height) override {
-        XSetErrorHandler(onXError);
+        guardX();
         if (width == 0 || height == 0) {
             glfwIconifyWindow(window_);
         } else {
@@ -127,7 +128,7 @@ public:
         }
     }
     void setTitle(const std::string& title) override {
-        XSetErrorHandler(onXError);
+        guardX();
         glfwSetWindowTitle(window_, title.c_str());
     }
 
@@ -138,6 +139,7 @@ private:
 // ---------------------------------------------------------------------------------------------
 // EGL: a pbuffer surface is the default framebuffer.
 
+#ifdef T10_HAVE_EGL
 class EglContext final : public Context {
 public:
     explicit EglContext(const ContextOptions& options) : width_(options.width), height_(options.height) {
@@ -243,6 +245,7 @@ private:
     int width_;
     int height_;
 };
+#endif
 
 // ---------------------------------------------------------------------------------------------
 // OSMesa: the legacy software path, rendering into a buffer we own.
@@ -287,10 +290,36 @@ private:
 } // namespace
 
 bool Context::displayAvailable() {
+#ifdef _WIN32
+    return true; // a Windows session always has a desktop to open a window on
+#else
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0');
+#endif
 }
+
+namespace {
+
+// The headless backend of this platform: EGL (then OSMesa) on Linux, a WGL pbuffer on Windows.
+std::unique_ptr<Context> createHeadless(const ContextOptions& options) {
+#ifdef _WIN32
+    return detail::createWglContext(options);
+#else
+    try {
+        return std::make_unique<EglContext>(options);
+    } catch (const Error& eglError) {
+#ifdef T10_HAVE_OSMESA
+        std::cerr << "warning: " << eglError.what() << "; falling back to OSMesa\n";
+        return std::make_unique<OsMesaContext>(options);
+#else
+        throw;
+#endif
+    }
+#endif
+}
+
+} // namespace
 
 std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     switch (options.backend) {
@@ -298,12 +327,24 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
         if (!displayAvailable()) throw Error("window: no display (DISPLAY and WAYLAND_DISPLAY are unset); use --headless");
         return std::make_unique<WindowContext>(options);
     case Backend::Egl:
+#ifdef T10_HAVE_EGL
         return std::make_unique<EglContext>(options);
+#else
+        throw Error("egl: EGL is Linux's headless backend; on Windows use --backend wgl (or --headless)");
+#endif
     case Backend::OsMesa:
 #ifdef T10_HAVE_OSMESA
         return std::make_unique<OsMesaContext>(options);
+#elif defined(_WIN32)
+        throw Error("osmesa: OSMesa is a Linux backend; on Windows use --backend wgl (or --headless)");
 #else
         throw Error("osmesa: this build has no OSMesa support (libosmesa6-dev was not found at configure time)");
+#endif
+    case Backend::Wgl:
+#ifdef _WIN32
+        return detail::createWglContext(options);
+#else
+        throw Error("wgl: WGL is the Windows headless backend; here use --backend egl (or --headless)");
 #endif
     case Backend::Auto:
         break;
@@ -315,16 +356,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
             std::cerr << "warning: " << error.what() << "; rendering headless instead\n";
         }
     }
-    try {
-        return std::make_unique<EglContext>(options);
-    } catch (const Error& eglError) {
-#ifdef T10_HAVE_OSMESA
-        std::cerr << "warning: " << eglError.what() << "; falling back to OSMesa\n";
-        return std::make_unique<OsMesaContext>(options);
-#else
-        throw;
-#endif
-    }
+    return createHeadless(options);
 }
 
 } // namespace t10

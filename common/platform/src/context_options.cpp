@@ -18,9 +18,9 @@ void addContextOptions(CLI::App& cli, ContextOptions& options) {
     auto size = std::make_shared<std::string>();
     CLI::Option_group* group = cli.add_option_group("Context", "Where the frames are rendered");
     group->add_flag("--headless", options.headless, "Render without a window (the default when there is no display)");
-    group->add_option("--backend", *backend, "auto | window | egl | osmesa (auto: a window when there is a display, "
-                                             "else EGL, else OSMesa)")
-        ->check(CLI::IsMember({"auto", "window", "egl", "osmesa"}));
+    group->add_option("--backend", *backend, "auto | window | egl | osmesa | wgl (auto: a window when there is a "
+                                             "display, else EGL, else OSMesa; on Windows a WGL pbuffer)")
+        ->check(CLI::IsMember({"auto", "window", "egl", "osmesa", "wgl"}));
     CLI::Option* sizeOption = group->add_option("--size", *size,
                                                 "Framebuffer size WIDTHxHEIGHT, each side 2 to 16384 "
                                                 "(default 1280x720); --input images follow the same rule");
@@ -29,6 +29,7 @@ void addContextOptions(CLI::App& cli, ContextOptions& options) {
         options.backend = *backend == "window" ? Backend::Window
                         : *backend == "egl"    ? Backend::Egl
                         : *backend == "osmesa" ? Backend::OsMesa
+                        : *backend == "wgl"    ? Backend::Wgl
                                                : Backend::Auto;
         if (options.headless && options.backend == Backend::Window) {
             throw UsageError("--headless contradicts --backend window");

@@ -1,7 +1,8 @@
 // The OpenGL 4.3 core context a stage renders with: a GLFW window, or headless through EGL
-// (Mesa's surfaceless platform, or the EGL device platform for a hardware GPU) or OSMesa.
-// Headless contexts render into an off-screen default framebuffer (an EGL pbuffer or an OSMesa
-// buffer), so stage code draws to framebuffer 0 the same way in every mode.
+// (Mesa's surfaceless platform, or the EGL device platform for a hardware GPU) or OSMesa on Linux,
+// through a WGL pbuffer on Windows. Headless contexts render into an off-screen default framebuffer
+// (an EGL or WGL pbuffer, an OSMesa buffer) of exactly the requested size, so stage code draws to
+// framebuffer 0 the same way in every mode.
 #pragma once
 #include <memory>
 #include <string>
@@ -10,7 +11,7 @@ struct GLFWwindow;
 
 namespace t10 {
 
-enum class Backend { Auto, Window, Egl, OsMesa };
+enum class Backend { Auto, Window, Egl, OsMesa, Wgl };
 
 struct ContextOptions {
     Backend backend = Backend::Auto;
@@ -29,7 +30,7 @@ public:
     // Creates the context, makes it current and loads the GL entry points. Throws t10::Error
     // naming the backend and the reason when it cannot.
     static std::unique_ptr<Context> create(const ContextOptions& options);
-    // True when a window can be opened here (an X11 or Wayland display is set).
+    // True when a window can be opened here (an X11 or Wayland display is set; always on Windows).
     static bool displayAvailable();
 
     virtual Backend backend() const = 0;
