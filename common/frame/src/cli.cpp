@@ -19,6 +19,16 @@ int parseCommandLine(int argc, const char* const* argv, const std::string& progr
     // Set before the groups are added: each group copies the defaults when it is made.
     app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     if (addOptions) addOptions(app);
+    // No option of ours takes an empty value, and CLI11 2.3 (Debian 12) loops forever on an empty
+    // argument followed by a dashed one (`"" -a`, found by fuzz/cli_fuzzer): refused before parsing.
+    for (int i = 1; i < argc; ++i) {
+        if (argv[i][0] == '\0') {
+            std::cerr << programName << ": error: argument " << i << " is empty"
+                      << (i > 1 ? std::string(" (after ") + argv[i - 1] + ")" : std::string())
+                      << "\nRun with --help for the options.\n";
+            return 2;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp&) {
