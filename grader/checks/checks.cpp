@@ -58,11 +58,38 @@ std::string format(double value, int precision = 4) {
     return text.str();
 }
 
-std::string formatValue(const std::vector<double>& value) {
-    if (value.size() == 1) return format(value[0], 3);
+// The student's value to the precision the tutorial writes its own with ("0.2126" -> 4 decimals; a
+// value written with an exponent, "1e-8", keeps its significant digits), or 3 significant digits.
+std::string likeWritten(double value, const std::string& written) {
+    if (written.find_first_of("eE") != std::string::npos || written.empty()) return format(value, 3);
+    const std::size_t dot = written.find('.');
+    const int decimals = dot == std::string::npos ? 0 : static_cast<int>(written.size() - dot - 1);
+    std::ostringstream text;
+    text.setf(std::ios::fixed);
+    text.precision(decimals);
+    text << value;
+    return text.str();
+}
+
+std::string listed(const std::vector<std::string>& values) {
+    if (values.size() == 1) return values[0];
     std::string out = "(";
-    for (std::size_t i = 0; i < value.size(); ++i) out += (i ? ", " : "") + format(value[i], 3);
+    for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + values[i];
     return out + ")";
+}
+
+// "your luminance weights measure (0.2130, 0.7150, 0.0720); the tutorial's are (0.2126, 0.7152, 0.0722)":
+// the tutorial's values as mistakes.tsv writes them, the student's to the same decimals.
+std::string estimateText(const Mistake& m, const std::vector<double>& value) {
+    std::string words = m.parameter;
+    std::replace(words.begin(), words.end(), '_', ' ');
+    const bool plural = words.size() > 1 && words.back() == 's' && words[words.size() - 2] != 's';
+    std::vector<std::string> student;
+    for (std::size_t i = 0; i < value.size(); ++i)
+        student.push_back(likeWritten(value[i], i < m.tutorialText.size() && value.size() == m.tutorialText.size()
+                                                    ? m.tutorialText[i] : std::string()));
+    return "your " + words + (plural ? " measure " : " measures ") + listed(student) + "; the tutorial's " +
+           (plural ? "are " : "is ") + listed(m.tutorialText);
 }
 
 std::string stepRange(const std::vector<int>& steps) {
@@ -81,9 +108,7 @@ std::string findingText(const std::string& id, const std::vector<int>& steps, co
     const Mistake& m = mistake(id);
     std::string text = "[" + id + "] ";
     if (!m.parameter.empty() && !value.empty()) {
-        std::string words = m.parameter;
-        std::replace(words.begin(), words.end(), '_', ' ');
-        text += "your " + words + " measures " + formatValue(value) + "; the tutorial's is " + formatValue(m.tutorial);
+        text += estimateText(m, value);
     } else if (id.size() > 8 && id.compare(id.size() - 8, 8, "-missing") == 0 && steps.size() > 1) {
         text += stepRange(steps) + " not implemented: " + m.text;
     } else {

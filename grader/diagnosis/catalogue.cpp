@@ -35,7 +35,10 @@ std::vector<Mistake> load(const std::string& path) {
         m.parameter = fields[1] == "-" ? "" : fields[1];
         try {
             if (fields[2] != "-")
-                for (const std::string& v : split(fields[2], ' ')) m.tutorial.push_back(std::stod(v));
+                for (const std::string& v : split(fields[2], ' ')) {
+                    m.tutorial.push_back(std::stod(v));
+                    m.tutorialText.push_back(v);
+                }
             for (const std::string& s : split(fields[3], ' ')) m.steps.push_back(std::stoi(s));
         } catch (const std::exception&) {
             throw Error(where + "the value '" + fields[2] + "' or the steps '" + fields[3] + "' are not numbers");

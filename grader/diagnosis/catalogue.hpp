@@ -10,6 +10,7 @@ struct Mistake {
     std::string id;          // "white-point"
     std::string parameter;   // "white_point", or "" for a mistake without a value
     std::vector<double> tutorial; // the tutorial's value (empty without a parameter)
+    std::vector<std::string> tutorialText; // the same, as the tutorial (and mistakes.tsv) writes it
     std::vector<int> steps;  // the steps it can be made in
     std::string text;        // what a student reads
 };

@@ -81,7 +81,7 @@ MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
 # Per-pass checks (the capture of each blur pass): what their measurement or diagnosis must say.
 PASS_WORDS = {"swapped_subroutines": [("pot.blur-passes", "first failing pass: pass 1 vertical")],
               "tap": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
-              "pass_count": [("pot.blur-pass-count", "6 blur passes"), ("pot.blur-pass-count", "your blur passes measures 3")],
+              "pass_count": [("pot.blur-pass-count", "6 blur passes"), ("pot.blur-pass-count", "your blur passes measure 3")],
               "full_res_offsets": [("pot.blur-passes", "first failing pass: pass 1 horizontal"), ("pot.blur", "exactly half")],
               **{name: [(f"{case}.blur-passes", "10 passes within tolerance") for case in ("pot", "npot", "extremes", "hot")]
                  + [("pot.blur-pass-count", "10 blur passes")] for name in ("reference3", "shaders3", "equivalent")}}

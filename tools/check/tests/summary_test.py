@@ -153,7 +153,7 @@ class OneLinePerFact(unittest.TestCase):
         self.assertIn("your luminance weights measure (0.2130, 0.7150, 0.0720); "
                       "the tutorial's are (0.2126, 0.7152, 0.0722)", text)
         text = self.lines("", {"parameter": "epsilon", "value": 1.04e-6, "tutorial": 1e-8})
-        self.assertIn("your epsilon measures 1e-06; the tutorial's is 1e-08", text)
+        self.assertIn("your epsilon measures 1.04e-06; the tutorial's is 1e-08", text)
         text = self.lines("", {"parameter": "blur_sigma", "value": 1.2504, "tutorial": 2.5})
         self.assertIn("your blur sigma measures 1.3; the tutorial's is 2.5", text)
 
