@@ -43,8 +43,6 @@ std::string number(double value, int decimals) {
     return buffer;
 }
 
-double hundredths(double value) { return std::round(value * 100.0) / 100.0; }
-
 std::string stepsText(const std::vector<int>& steps) {
     std::string out;
     for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -86,7 +84,7 @@ std::string checkText(const Check& c) {
 
 std::string stepOutput(const Report& report, const StepResult& step) {
     if (step.checks.empty()) return "not graded: the submission's status is " + report.status + " (see the summary)";
-    std::string out;
+    std::string out = step.note.empty() ? "" : step.note + "\n";
     // Failures first: they are what the student acts on.
     for (const Check* c : step.checks)
         if (!c->passed) out += checkText(*c);
@@ -142,8 +140,7 @@ std::string base64(const std::string& bytes) {
 
 std::string gradescope(const Report& report) {
     std::ostringstream out;
-    // `score` is given, so Gradescope shows it rather than the sum of the tests' (they differ by the
-    // rounding: report.json's score is rounded down, the steps' points to 0.01).
+    // `score` is given, so Gradescope shows report.json's score; the tests' points add up to it.
     out << "{\n  \"score\": " << report.score() << ",\n  \"execution_time\": " << static_cast<long>(std::lround(report.seconds))
         << ",\n  \"output\": " << jsonQuote(summary(report)) << ",\n  \"output_format\": \"text\""
         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
@@ -151,7 +148,7 @@ std::string gradescope(const Report& report) {
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
         out << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"number\": \""
-            << stepNumber(s.step) << "\", \"score\": " << number(s.points, 2) << ", \"max_score\": " << number(s.maxPoints, 2)
+            << stepNumber(s.step) << "\", \"score\": " << s.points << ", \"max_score\": " << s.maxPoints
             << ", \"status\": \"" << (s.passed ? "passed" : "failed") << "\", \"output\": " << jsonQuote(stepOutput(report, s))
             << ", \"output_format\": \"text\", \"visibility\": \"visible\", \"tags\": [\"part" << report.part << "\", \"step-"
             << stepNumber(s.step) << "\"]}";
@@ -173,8 +170,8 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
         }
         if (s.checks.empty()) message = "not graded (" + report.status + ")";
         tests << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"description\": "
-              << jsonQuote(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << number(s.points, 2)
-              << ", \"max_points\": " << number(s.maxPoints, 2) << ", \"message\": "
+              << jsonQuote(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << s.points
+              << ", \"max_points\": " << s.maxPoints << ", \"message\": "
               << jsonQuote(capped(message.empty() ? "passed" : message, kTestOutputCap)) << ", \"output\": "
               << jsonQuote(stepOutput(report, s)) << "}";
     }
@@ -219,20 +216,54 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
     return text;
 }
 
+// What the Classroom reporter prints under a failed step ("Test code:"): each failed check that blames
+// it with what was measured and what was expected, then the tutorial's step; for a submission that was
+// not graded, the first step carries the status and the tool's own first words.
+std::string classroomDetail(const Report& report, const StepResult& step, bool first) {
+    if (step.passed) return step.note;
+    if (step.checks.empty()) {
+        if (!first) return "";
+        std::string message = report.message.substr(0, report.message.find("\n\n"));
+        return capped("not graded: " + report.status + (message.empty() ? "" : "\n" + message), kClassroomMessageCap);
+    }
+    // The first failed check that names a mistake (else the first failed one) in full; the others by id.
+    std::string out;
+    const Check* shown = nullptr;
+    std::string others;
+    for (const Check* c : step.checks)
+        if (!c->passed && (shown == nullptr || (shown->mistakes.empty() && !c->mistakes.empty()))) shown = c;
+    for (const Check* c : step.checks)
+        if (!c->passed && c != shown) others += (others.empty() ? "" : ", ") + c->id;
+    if (shown != nullptr)
+        out += shown->id + ": " + shown->diagnosis + "\nmeasured: " + shown->measured + "\nexpected: " + shown->tolerance + "\n";
+    if (!others.empty()) out += "also failing here: " + others + "\n";
+    out = capped(out, kClassroomMessageCap);
+    if (out.back() != '\n') out += "\n";
+    return out + "tutorial: " + stepAnchor(step.step);
+}
+
 std::string classroom(const Report& report) {
     // status: pass only at full marks; error for the grader's own failure; fail otherwise (the
     // reporter fails its step on fail or error: grade.yml decides whether the job fails).
     const std::string status = report.status == "grader-error" ? "error" : report.score() == 100 ? "pass" : "fail";
+    const std::vector<int> failed = report.failedSteps();
+    const std::vector<StepResult> steps = stepResults(report);
+    // The step to fix first: the earliest one a failed check blames (Report::fixFirst), else the first.
+    const int fixStep = !failed.empty() ? failed.front() : steps.empty() ? 0 : steps.front().step;
     std::ostringstream out;
     out << "{\"version\": 1, \"status\": \"" << status << "\", \"max_score\": 100, \"tests\": [";
-    const std::vector<StepResult> steps = stepResults(report);
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
         const std::string testStatus = report.status == "grader-error" ? "error" : s.passed ? "pass" : "fail";
-        out << (i ? ", " : "") << "{\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"status\": \"" << testStatus
-            << "\", \"score\": " << number(s.points, 2) << ", \"message\": " << jsonQuote(failures(report, s))
-            << ", \"test_code\": "
-            << jsonQuote("t10-grade --part " + std::to_string(report.part) + ", " + stepName(report, s.step))
+        const bool fixFirst = !s.passed && s.step == fixStep && report.status != "grader-error";
+        // The reporter prints the name on the step's line: the points (whole numbers that add up to the
+        // score) and which step to fix first are read there.
+        const std::string name = stepName(report, s.step) + ": " + std::to_string(s.points) + "/" +
+                                 std::to_string(s.maxPoints) + (s.maxPoints == 1 ? " point" : " points") +
+                                 (fixFirst ? " - fix this first" : "");
+        out << (i ? ", " : "") << "{\"name\": " << jsonQuote(name) << ", \"status\": \"" << testStatus
+            << "\", \"score\": " << s.points << ", \"message\": " << jsonQuote(failures(report, s))
+            << ", \"test_code\": " << jsonQuote(classroomDetail(report, s, s.step == fixStep))
             << ", \"filename\": \"\", \"line_no\": 0, \"execution_time\": \"" << number(report.seconds, 1) << "s\"}";
     }
     out << "]}\n";
@@ -242,21 +273,16 @@ std::string classroom(const Report& report) {
 } // namespace
 
 std::vector<StepResult> stepResults(const Report& report) {
-    // One test per step of the part, worth its share of the rubric's points (report.hpp's score): a step
-    // fails when a failed check blames it (Report::failedSteps), so one mistake costs its step once.
+    // One test per step of the part, worth its whole points (rubric.hpp's wholePoints, the split the
+    // score adds up): a step fails when a failed check blames it (Report::failedSteps), so one mistake
+    // costs its step once, and the passed steps' points add up to report.score().
     const std::vector<int> failed = report.failedSteps();
-    double total = 0.0;
-    for (int step : partSteps(report.part)) {
-        const auto at = report.rubric.find(step);
-        total += at == report.rubric.end() ? 1.0 : at->second;
-    }
+    const std::map<int, int> whole = wholePoints(report.rubric, report.part);
     std::vector<StepResult> out;
-    double maxSoFar = 0.0;
+    int earned = 0;
     for (int step : partSteps(report.part)) {
         StepResult s;
         s.step = step;
-        const auto at = report.rubric.find(step);
-        const double weight = at == report.rubric.end() ? 1.0 : at->second;
         for (const Check& c : report.checks) {
             const std::vector<int> blamed = failedSteps(c);
             const bool covers = std::find(c.steps.begin(), c.steps.end(), step) != c.steps.end();
@@ -265,12 +291,20 @@ std::vector<StepResult> stepResults(const Report& report) {
         }
         s.passed = report.status == "graded" && !report.checks.empty() &&
                    std::find(failed.begin(), failed.end(), step) == failed.end();
-        // Rounded to 0.01 cumulatively, so that the maxima add up to exactly 100.00.
-        const double exact = total > 0.0 ? 100.0 * weight / total : 0.0;
-        s.maxPoints = hundredths(hundredths(maxSoFar + exact) - hundredths(maxSoFar));
-        maxSoFar += exact;
-        s.points = s.passed ? s.maxPoints : 0.0;
+        const auto at = whole.find(step);
+        s.maxPoints = at == whole.end() ? 0 : at->second;
+        s.points = s.passed ? s.maxPoints : 0;
+        earned += s.points;
         out.push_back(s);
+    }
+    // The score is at most 99 while any check fails: where no step is blamed (a rubric that gives the
+    // blamed steps 0 points), the point held back comes off the last passed step that has one.
+    for (auto s = out.rbegin(); earned > report.score() && s != out.rend(); ++s) {
+        const int held = std::min(s->points, earned - report.score());
+        if (held == 0) continue;
+        s->points -= held;
+        earned -= held;
+        s->note = std::to_string(held) + " point held back: 100 only when every check passes";
     }
     return out;
 }

@@ -16,14 +16,15 @@ struct StepResult {
     int step = 0;                      // a tutorial step
     std::vector<const Check*> checks;  // the failed checks that blame the step, the passed ones that cover it
     bool passed = false;               // graded, and no failed check blames the step
-    double points = 0.0;               // earned, rounded to 0.01
-    double maxPoints = 0.0;            // rounded to 0.01; a report's steps add up to exactly 100
+    int points = 0;                    // earned: maxPoints when passed, else 0; they add up to Report::score()
+    int maxPoints = 0;                 // whole points (rubric.hpp's wholePoints); a part's add up to 100
+    std::string note;                  // why a passed step earns less than maxPoints (the cap of 99), or ""
 };
 
-// One result per tutorial step of the part, worth the step's share of the rubric's points
-// (rubric.txt): passed unless a failed check blames the step (Report::failedSteps), so the steps'
-// points add up to the report's score before its cap of 99 while any check fails. A report that
-// was not graded (build-failed, crashed, ...) fails every step.
+// One result per tutorial step of the part, worth the step's whole points (rubric.hpp's wholePoints):
+// passed unless a failed check blames the step (Report::failedSteps). The earned points add up to
+// exactly Report::score(), the number every output shows. A report that was not graded
+// (build-failed, crashed, ...) fails every step.
 std::vector<StepResult> stepResults(const Report& report);
 
 // The names --format accepts.

@@ -110,14 +110,12 @@ std::vector<int> Report::failedSteps() const {
 
 int Report::score() const {
     if (status != "graded" || checks.empty()) return 0;
-    double total = 0.0;
-    for (const auto& [step, points] : rubric) total += points;
-    double lost = 0.0;
-    for (int step : failedSteps()) {
-        const auto at = rubric.find(step);
-        lost += at == rubric.end() ? 0.0 : at->second;
-    }
-    const int score = total > 0.0 ? static_cast<int>(std::floor(100.0 * (total - lost) / total + 1e-9)) : 0;
+    // The sum of the whole points (rubric.hpp) of the steps no failed check blames: the same points
+    // every platform's step tests carry (formats.cpp's stepResults).
+    const std::vector<int> failed = failedSteps();
+    int score = 0;
+    for (const auto& [step, points] : wholePoints(rubric, part))
+        if (!std::binary_search(failed.begin(), failed.end(), step)) score += points;
     return passedCount() == static_cast<int>(checks.size()) ? score : std::min(score, 99);
 }
 
@@ -135,14 +133,12 @@ const Check* blamedBy(const Report& report, int step) {
     return first;
 }
 
-// The tutorial page the step links point at: $T10_GRADE_TUTORIAL_URL (the course site's page, for
-// reports read elsewhere), else tutorial10.html beside the report as the site's own pages link it.
+} // namespace
+
 std::string stepAnchor(int step) {
     const char* url = std::getenv("T10_GRADE_TUTORIAL_URL");
     return std::string(url != nullptr && *url != '\0' ? url : "tutorial10.html") + "#step-" + std::to_string(step);
 }
-
-} // namespace
 
 std::string Report::fixFirst() const {
     const std::vector<int> steps = failedSteps();

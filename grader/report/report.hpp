@@ -22,9 +22,9 @@ struct Report {
     std::string isolation;   // namespaces | uid | none: how the submission's code was contained
     std::string fill;        // --fill-from-reference: unchanged | all | none
     std::vector<SubmissionFile> files; // every file of the submission folder and where each came from
-    // 0-100: the share of the rubric's points whose steps no failed check blames, rounded down; at
-    // most 99 while any check fails, so only a submission that passes every check gets 100; 0 for any
-    // status other than graded.
+    // 0-100: the whole points (rubric.hpp's wholePoints) of the steps no failed check blames; at most
+    // 99 while any check fails, so only a submission that passes every check gets 100; 0 for any
+    // status other than graded. Every output shows this number.
     int score() const;
     int passedCount() const;
     // The steps the failed checks blame, each once, in tutorial order.
@@ -32,6 +32,10 @@ struct Report {
     // "fix first: step 9 - <the diagnosis of the first check that blames it>", or "" when all passed.
     std::string fixFirst() const;
 };
+
+// The link to a tutorial step: $T10_GRADE_TUTORIAL_URL (the course site's page, for reports read
+// elsewhere), else tutorial10.html beside the report as the site's own pages link it, with #step-N.
+std::string stepAnchor(int step);
 
 void writeReportJson(const Report& report, const std::string& path);
 void writeReportHtml(const Report& report, const std::string& path);

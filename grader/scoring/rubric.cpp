@@ -4,11 +4,14 @@
 #include "checks/checks.hpp"
 #include "t10/error.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace t10::grade {
 
@@ -58,6 +61,36 @@ Rubric loadRubric(int part) {
     }
     if (!(total > 0.0)) throw Error(path + ": the steps of Part " + std::to_string(part) + " are worth 0 points");
     return rubric;
+}
+
+std::map<int, int> wholePoints(const Rubric& listed, int part) {
+    Rubric rubric;
+    for (int step : partSteps(part)) {
+        const auto at = listed.find(step);
+        rubric[step] = at == listed.end() ? 1.0 : at->second;
+    }
+    double total = 0.0;
+    for (const auto& [step, points] : rubric) total += points;
+    std::map<int, int> whole;
+    if (!(total > 0.0)) {
+        for (const auto& entry : rubric) whole[entry.first] = 0;
+        return whole;
+    }
+    // (remainder in units of 1e-9, step): equal shares tie exactly, whatever their last bits.
+    std::vector<std::pair<long long, int>> remainders;
+    int given = 0;
+    for (const auto& [step, points] : rubric) {
+        const double share = 100.0 * points / total;
+        // The 1e-9 keeps an exact share (6.25 * 16 = 100) from losing a point to its last bit.
+        const int floor = static_cast<int>(std::floor(share + 1e-9));
+        whole[step] = floor;
+        given += floor;
+        remainders.emplace_back(std::llround((share - floor) * 1e9), step);
+    }
+    std::stable_sort(remainders.begin(), remainders.end(),
+                     [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (std::size_t i = 0; given < 100 && i < remainders.size(); ++i, ++given) ++whole[remainders[i].second];
+    return whole;
 }
 
 } // namespace t10::grade

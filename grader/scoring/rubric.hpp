@@ -13,4 +13,11 @@ Rubric loadRubric(int part);
 // The rubric file loadRubric reads: $T10_GRADE_RUBRIC if set, else the one in the source tree.
 std::string rubricPath();
 
+// The score's one rounding: 100 whole points split over the rubric's steps in proportion to their
+// points, by largest remainder (each step gets the whole part of its share; the points left go to the
+// largest remainders, the earlier step first on a tie). They add up to exactly 100, so the score and
+// every platform's step points are whole numbers that add up to each other. A step of the part that
+// the rubric lacks (a report whose grading failed before the rubric was read) counts 1 point.
+std::map<int, int> wholePoints(const Rubric& rubric, int part);
+
 } // namespace t10::grade

@@ -4,7 +4,11 @@
   check_platforms.py results FORMAT REPORT_DIR NAME...  each NAME's result is valid (validate_FORMAT.py)
                                                        and says what its report.json says: reference3
                                                        full marks, weight step 20 failed with its score,
-                                                       no_compile and crash score 0 with their status
+                                                       no_compile and crash score 0 with their status;
+                                                       one score everywhere: the steps' whole points add
+                                                       up to report.json's score, which the platform's
+                                                       top score, gradebook.csv, grades-lms.csv and the
+                                                       class index (index.html) show too
   check_platforms.py rejects REPORT_DIR/NAME            each validator rejects results broken on purpose
                                                        (a score over its maximum, a missing field, a
                                                        wrong type, a bad enumeration, over the size limit)
@@ -12,8 +16,10 @@
                                                        (format_errors says why), Gradescope 0, Classroom error
 Exit 0 when all hold, 1 otherwise."""
 import copy
+import csv
 import json
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -48,7 +54,7 @@ def tests_of(fmt, data):
     """[(step, points, max points or None, passed)] from a platform's tests."""
     out = []
     for t in data["tests"]:
-        step = int(t["name"].rsplit(" ", 1)[1])
+        step = int(re.search(r"\bstep (\d+)", t["name"]).group(1))
         if fmt == "gradescope":
             out.append((step, t["score"], t["max_score"], t["status"] == "passed"))
         elif fmt == "prairielearn":
@@ -70,30 +76,28 @@ def check_results(fmt, report_dir, names):
             errors.append(f"{name}: report.json status {report['status']}, expected {status}")
         tests = tests_of(fmt, data)
         part_steps = {"1": 16, "2": 25, "3": 36}[str(report["part"])]
-        # A test per step of the part, worth the step's share of the rubric's points (report.json's
-        # "steps"); it fails exactly when the step is in report.json's "failed_steps" (or the
-        # submission was not graded), so the points add up to the rubric's share of steps kept.
+        # A test per step of the part, worth the step's whole points (rubric.hpp's wholePoints); it
+        # fails exactly when the step is in report.json's "failed_steps" (or the submission was not
+        # graded).
         every = list(range(1, part_steps + 1))
         if sorted(t[0] for t in tests) != every:
             errors.append(f"{name}: the tests are not one per tutorial step: {[t[0] for t in tests]}")
+        # One score everywhere: whole points per step (maxima adding up to exactly 100) whose earned
+        # part adds up to report.json's score, which every other output shows as it is.
         maxima = [t[2] for t in tests if t[2] is not None]
-        if maxima and abs(sum(maxima) - 100) > EPSILON:
+        if any(not isinstance(p, int) or isinstance(p, bool) for t in tests for p in t[1:3] if p is not None):
+            errors.append(f"{name}: step points that are not whole numbers: {[t[1:3] for t in tests][:5]}")
+        if maxima and sum(maxima) != 100:
             errors.append(f"{name}: the steps' maxima add up to {sum(maxima)}, not 100")
-        rubric = {e["step"]: float(e["points"]) for e in report.get("steps", [])} or {s: 1.0 for s in every}
-        total = sum(rubric.get(s, 1.0) for s in every)
-        failed = set(report.get("failed_steps", [])) if report["status"] == "graded" else set(every)
-        exact = 100.0 * sum(rubric.get(s, 1.0) for s in every if s not in failed) / total
         earned = sum(t[1] for t in tests)
-        # Each maximum is rounded to 0.01 cumulatively: the sum is within 0.01 per step of the exact share.
-        if abs(earned - exact) > 0.01 * len(every) + EPSILON:
-            errors.append(f"{name}: the steps' points add up to {earned:.2f}, the rubric's share kept is {exact:.2f}")
-        score = {"gradescope": lambda: data["score"], "prairielearn": lambda: data["score"] * 100,
+        if earned != report["score"]:
+            errors.append(f"{name}: the {fmt} steps' points add up to {earned}, report.json's score is {report['score']}")
+        score = {"gradescope": lambda: data["score"], "prairielearn": lambda: round(data["score"] * 100, 6),
                  "classroom": lambda: earned}[fmt]()
-        # report.json's score is the share rounded down and capped at 99 while a check fails.
-        if fmt != "classroom" and abs(score - report["score"]) > 0.5 + EPSILON:
+        if score != report["score"]:
             errors.append(f"{name}: {fmt} score {score} but report.json says {report['score']}")
-        if fmt == "classroom" and abs(score - exact) > 0.01 * len(every) + EPSILON:
-            errors.append(f"{name}: classroom points {score} but the rubric's share kept is {exact:.2f}")
+        errors += [f"{name}: {e}" for e in class_outputs(report_dir, name, report["score"])]
+        failed = set(report.get("failed_steps", [])) if report["status"] == "graded" else set(every)
         if full and (report["score"] != 100 or not all(t[3] for t in tests)):
             errors.append(f"{name}: expected full marks, got {score} with failed steps {[t[0] for t in tests if not t[3]]}")
         if not full and score >= 100:
@@ -118,6 +122,21 @@ def check_results(fmt, report_dir, names):
             if not any("heat-map" in label for label in labels) and "Images left out" not in data["output"]:
                 errors.append(f"{name}: a failed image check, but no heat-map and no note that it was left out")
         print(f"{name}: {fmt} result valid ({len(raw)} bytes, score {score:.2f}, {len(tests)} steps)")
+    return errors
+
+
+def class_outputs(report_dir, name, score):
+    """Where the class's files (gradebook.csv, grades-lms.csv, index.html) show another score for NAME."""
+    errors = []
+    for table, key in (("gradebook.csv", "submission"), ("grades-lms.csv", "student_id")):
+        with open(os.path.join(report_dir, table), encoding="utf-8") as f:
+            rows = [r for r in csv.DictReader(f) if r.get(key) == name]
+        if [r.get("score") for r in rows] != [str(score)]:
+            errors.append(f"{table} shows {[r.get('score') for r in rows]}, report.json {score}")
+    with open(os.path.join(report_dir, "index.html"), encoding="utf-8") as f:
+        cells = re.findall(r'href="' + re.escape(name) + r'/report\.html">[^<]*</a>[^<]*</td><td>([^<]*)</td>', f.read())
+    if cells != [str(score)]:
+        errors.append(f"the class index shows {cells}, report.json {score}")
     return errors
 
 
