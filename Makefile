@@ -13,11 +13,12 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
             libimgui-dev
 # What `make test` needs on top: every program a test runs (time: tests/reliability/measure.sh runs
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
-# xauth: the window tests; the site's tools and fonts) and Catch2. `make run` installs none of them.
+# xauth: the window tests; nodejs: the platform tests run GitHub Classroom's released grading reporter,
+# tests/fixtures/classroom-reporter; the site's tools and fonts) and Catch2. `make run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
-TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml \
+TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml nodejs \
                  jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -280,8 +281,12 @@ run-stage:
 # out/prairielearn/partN/ (the entrypoint and an info.json snippet).
 # The grader is built with the tests (it reuses their CPU reference), so it needs Catch2; bubblewrap is its sandbox.
 GRADER_PACKAGES := $(PACKAGES) catch2 bubblewrap python3-venv
-.PHONY: grader gradescope prairielearn platform-part
+.PHONY: grader grader-packages gradescope prairielearn platform-part
 grader: PACKAGES := $(GRADER_PACKAGES)
+# The list the platforms' install script (grader/platforms/install_grader.sh) checks and installs.
+grader-packages:
+	@echo $(GRADER_PACKAGES)
+
 grader: configure grade-deps
 	cmake --build $(BUILD) -j $(JOBS) --target t10-grade
 

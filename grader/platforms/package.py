@@ -4,8 +4,10 @@
   package.py gradescope PART SOURCE OUT     OUT/autograder.zip: setup.sh and run_autograder at its root,
                                             grade_one.sh, t10.conf (the part) and the checkout's tracked
                                             files under t10/ (setup.sh builds them in the image)
-  package.py prairielearn PART SOURCE OUT   OUT/run.sh (the entrypoint), grade_one.sh, t10.conf and
+  package.py prairielearn PART SOURCE OUT   OUT/run.sh (the entrypoint), grade_one.sh, t10.conf,
                                             info.json (the keys to merge into the question's info.json)
+                                            and question.html (the file upload, and the results element
+                                            without which PrairieLearn shows no tests and no images)
 
 Files are written under temporary names and renamed into place. Exit 0 on success, 1 on failure
 (with the file and the reason), 2 on bad usage."""
@@ -77,6 +79,29 @@ def gradescope(part, source, out):
     print(f"wrote {target} ({os.path.getsize(target) // 1024} KiB, {len(files)} files of the checkout)")
 
 
+# The part's files (grade_one.sh copies these, and only these, out of a submission).
+PART_FILES = {1: ["Tutorial10.cpp", "PostProcess.frag", "PostProcessInit.frag"],
+              2: ["Tutorial10.cpp", "PostProcess.frag", "PostProcessInit.frag"],
+              3: ["Tutorial10.cpp", "PostProcess.frag", "PostProcessInit.frag", "Gauss.frag"]}
+
+
+def question_html(part):
+    """The question's HTML: PrairieLearn renders the external grader's tests, messages and images only
+    where the submission panel holds <pl-external-grader-results>."""
+    files = ", ".join(PART_FILES[part])
+    return f"""<pl-question-panel>
+  <p>Tutorial 10, Part {part}: upload your <code>Tutorial10.cpp</code> and the part's shaders. The grader
+  builds and renders them against the reference and scores each tutorial step.</p>
+  <pl-file-upload file-names="{files}"></pl-file-upload>
+</pl-question-panel>
+
+<pl-submission-panel>
+  <pl-external-grader-results></pl-external-grader-results>
+  <pl-file-preview></pl-file-preview>
+</pl-submission-panel>
+"""
+
+
 def prairielearn(part, out):
     copy(os.path.join(HERE, "prairielearn", "run.sh"), os.path.join(out, "run.sh"), 0o755)
     copy(os.path.join(HERE, "grade_one.sh"), os.path.join(out, "grade_one.sh"), 0o755)
@@ -86,14 +111,16 @@ def prairielearn(part, out):
         "gradingMethod": "External",
         "externalGradingOptions": {
             "enabled": True,
-            "image": "REPLACE-WITH-YOUR-IMAGE (a checkout built with make grader at /opt/t10)",
+            "image": "REPLACE-WITH-YOUR-IMAGE (grader/platforms/Dockerfile: a checkout built with make grader at /opt/t10)",
             "serverFilesCourse": [f"t10/part{part}/"],
             "entrypoint": f"/grade/serverFilesCourse/t10/part{part}/run.sh",
             "timeout": 600,
         },
     }
     write_text(os.path.join(out, "info.json"), json.dumps(info, indent=2) + "\n")
-    print(f"wrote {out}/run.sh, grade_one.sh, t10.conf and info.json (copy the folder to serverFilesCourse/t10/part{part}/)")
+    write_text(os.path.join(out, "question.html"), question_html(part))
+    print(f"wrote {out}/run.sh, grade_one.sh, t10.conf, info.json and question.html (copy the folder to "
+          f"serverFilesCourse/t10/part{part}/; question.html and info.json's keys go to the question's folder)")
 
 
 def main():

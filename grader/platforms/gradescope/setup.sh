@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Gradescope runs this once, as root, when it builds the autograder's image (the zip is unpacked into
 # $AUTOGRADER_ROOT/source, default /autograder/source). It installs what the grader needs and builds
-# only that (make grader: t10-grade, the reference stages, FLIP in a venv). With T10_SOURCE=<checkout>
+# only that (install_grader.sh: make grader, t10-grade, the reference stages, FLIP in a venv). With T10_SOURCE=<checkout>
 # (and T10_BUILD, default <checkout>/build) it reuses a checkout that is already built instead: that
 # is how the tests run it outside a container. Then grades the reference stage (it must score 100), which
 # also fills the grader's cache, and writes source/t10-location for run_autograder.
@@ -16,12 +16,10 @@ if [ -n "${T10_SOURCE:-}" ]; then
 else
     T10_SOURCE=$here/t10
     build=$T10_SOURCE/build
-    # The project targets Debian 12 (CMake >= 3.25, tinygltf, OpenEXR 3): on an older base image the
-    # package install or the configure step stops with its own message.
-    export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
-    apt-get install -y -qq --no-install-recommends make ca-certificates
-    make -C "$T10_SOURCE" grader
+    # The one install script of every platform image: it checks that this base image's release has
+    # what the grader needs (stopping with the list of what it lacks and the base image to choose),
+    # takes CMake from PyPI when the system's is too old, and runs make grader.
+    "$T10_SOURCE/grader/platforms/install_grader.sh" "$T10_SOURCE"
 fi
 # Grade the reference stage once: it must score 100 here (proof that this image renders as the grader
 # expects), and its renders and build stay in the grader's cache for every submission.

@@ -12,6 +12,7 @@ SUBMISSION in student/, then an empty upload, then a grader that cannot start (g
 Each results.json is validated (validate_*.py) and must say what happened. Exit 0 when all hold."""
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -102,6 +103,19 @@ def prairielearn(source, build, submission, out):
         options = json.load(f)["externalGradingOptions"]
     if not options["entrypoint"].endswith("/run.sh"):
         errors.append(f"info.json: entrypoint {options['entrypoint']}")
+    # PrairieLearn shows the tests and images only where the question holds the results element; the
+    # upload asks for exactly the files grade_one.sh takes from a Part 3 submission.
+    with open(os.path.join(package, "question.html"), encoding="utf-8") as f:
+        question = f.read()
+    with open(os.path.join(os.path.dirname(PACKAGE), "grade_one.sh"), encoding="utf-8") as f:
+        script = f.read()
+    taken = re.search(r'^files="([^"]*)"', script, re.M).group(1).split() + \
+        re.search(r'^\[ "\$T10_PART" = 3 \] && files="\$files ([^"]*)"', script, re.M).group(1).split()
+    upload = re.search(r'<pl-file-upload file-names="([^"]*)"', question)
+    if "<pl-external-grader-results></pl-external-grader-results>" not in question.split("<pl-submission-panel>")[-1]:
+        errors.append("question.html: no <pl-external-grader-results> in the submission panel")
+    if upload is None or [f.strip() for f in upload.group(1).split(",")] != taken:
+        errors.append(f"question.html: the upload asks for {upload and upload.group(1)}, grade_one.sh takes {taken}")
     root = fresh(os.path.join(out, "root"))
     env = {"GRADE_ROOT": root, "T10_SOURCE": source, "T10_BUILD": build}
     copy_files(submission, os.path.join(root, "student"))
