@@ -6,8 +6,9 @@
 # The project targets Debian 12 and 13. On another apt-based image (Gradescope's Ubuntu bases) it checks,
 # before building, that the release has every package the grader needs, in the versions it needs, and
 # supplies what can come from a registry reachable at image build time: CMake from PyPI (into
-# /opt/t10-cmake) when the system's is older than the presets need (3.25). What the release lacks
-# otherwise is listed in one message, with the base image to choose instead, and the script exits 1.
+# $T10_CMAKE_VENV, default /opt/t10-cmake) when the system's is older than the presets need (3.25).
+# What the release lacks otherwise is listed in one message, with the base image to choose instead,
+# and the script exits 1.
 # Exit 0 when the grader is built; 1 when it cannot be; 2 on bad usage.
 set -euo pipefail
 if [ $# -ne 1 ] || [ ! -f "$1/Makefile" ]; then
@@ -53,12 +54,13 @@ apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
 need=3.25
 have=$(cmake --version 2>/dev/null | sed -n 's/^cmake version \([0-9.]*\).*/\1/p')
 if [ -z "$have" ] || dpkg --compare-versions "$have" lt "$need"; then
-    say "CMake ${have:-(none)} is older than $need: installing CMake from PyPI into /opt/t10-cmake"
+    venv=${T10_CMAKE_VENV:-/opt/t10-cmake}
+    say "CMake ${have:-(none)} is older than $need: installing CMake from PyPI into $venv"
     apt-get install -y -qq --no-install-recommends python3-venv >/dev/null
-    python3 -m venv /opt/t10-cmake
+    python3 -m venv "$venv"
     # Pinned: the release the project was checked with.
-    /opt/t10-cmake/bin/pip install --quiet --disable-pip-version-check 'cmake==3.31.6'
-    export PATH=/opt/t10-cmake/bin:$PATH
+    "$venv/bin/pip" install --quiet --disable-pip-version-check 'cmake==3.31.6'
+    export PATH=$venv/bin:$PATH
     have=$(cmake --version | sed -n 's/^cmake version \([0-9.]*\).*/\1/p')
 fi
 say "CMake $have, $(c++ --version | head -n 1)"

@@ -64,7 +64,13 @@ foreach(case
     add_test(NAME "grade platforms: usage t10-grade ${label}" COMMAND ${EXPECT} ${code} "${regex}" -- ${PROJECT_BINARY_DIR}/bin/t10-grade ${case})
 endforeach()
 
-# The students' GitHub Classroom workflow parses as YAML and has the shape the Classroom reporter needs.
+# The platforms' install script (setup.sh, the Dockerfile) decides right for each release's packages:
+# played by stand-ins for apt-get, apt-cache and cmake, so nothing is installed.
+add_test(NAME "grade platforms: install_grader.sh refuses Ubuntu 22.04's packages, takes CMake from PyPI when too old"
+         COMMAND ${PLATFORM_TESTS}/install_check.sh ${PROJECT_SOURCE_DIR} ${PLATFORM_OUT}/install-check)
+
+# The students' GitHub Classroom workflow parses as YAML and has the shape the Classroom reporter needs;
+# the grading step's outputs, run through GitHub Classroom's released reporter, show what a student reads.
 add_test(NAME "grade platforms: the Classroom workflow is valid YAML with the reporter wired"
          COMMAND ${Python3_EXECUTABLE} ${PLATFORM_TESTS}/check_workflow.py yaml ${PROJECT_SOURCE_DIR}/.github/workflows/grade.yml)
 add_test(NAME "grade platforms: the Classroom workflow's grading step merges parts, writes the job summary"
