@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The short summary `make check` prints from t10-grade's report.json: the score, what to fix first
-(the failing check with the earliest tutorial step) with its tutorial link, what was measured and
+(the step t10-grade names in fix_first, else the failing check with the earliest tutorial step) with its tutorial link, what was measured and
 what was expected, the views that show that buffer, and where the full report is.
 
 usage: summary.py REPORT.json [--site-url URL]
@@ -17,6 +17,7 @@ number of decimals. Exit 0 only for status graded at score 100;
 import argparse
 import json
 import os
+import re
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
@@ -209,9 +210,17 @@ def summarize(report, report_path, site_url=DEFAULT_SITE_URL):
         fix_first = report.get("fix_first")
         check, others = first_to_fix(checks)
         step = None
+        wanted = ""
         if isinstance(fix_first, dict):
             step = fix_first.get("step") if isinstance(fix_first.get("step"), int) else None
             wanted = text(fix_first.get("check"))
+        elif isinstance(fix_first, str):
+            # t10-grade's own choice, "fix first: step 20 - pot.frame: ...": the earliest step a failed
+            # check blames (not the check's first step), the same step GitHub Classroom's log marks.
+            chosen = re.match(r"fix first: step (\d+) - ([^:\s]+):", fix_first)
+            if chosen:
+                step, wanted = int(chosen.group(1)), chosen.group(2)
+        if wanted:
             named = [c for c in ([check] + others if check is not None else others) if text(c.get("id")) == wanted]
             if named:
                 others = [o for o in [check] + others if o is not named[0]]

@@ -158,6 +158,18 @@ class OneLinePerFact(unittest.TestCase):
         self.assertIn("your blur sigma measures 1.3; the tutorial's is 2.5", text)
 
 
+class TheGradersStep(unittest.TestCase):
+    def test_the_step_the_grader_blames_not_the_checks_first(self):
+        # A wrong bloom weight fails the frame check of steps 6-10, 19, 20 and 35; the grader blames 20.
+        diagnosis = "[bloom-weight] your bloom weight measures 0.50; the tutorial's is 0.98 (step 20)"
+        text, _ = summarize(report([check("pot.frame", [6, 7, 8, 9, 10, 19, 20, 35], False, blames=[20], diagnosis=diagnosis),
+                                    check("pot.key", [3, 4, 5], True)],
+                                   fix_first="fix first: step 20 - pot.frame: " + diagnosis))
+        self.assertIn("Fix first: step 20: check pot.frame", text)
+        self.assertIn("tutorial10.html#step-20", text)
+        self.assertNotIn("#step-6", text)
+
+
 class CommandLine(unittest.TestCase):
     def run_on(self, content):
         path = os.path.join(SCRATCH, "report.json")
