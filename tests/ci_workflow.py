@@ -8,6 +8,7 @@ students' grade.yml: it parses as YAML (Debian's python3-yaml) and runs what iss
   upload of build/tests/out/ (the golden renders and differences);
 - a job that runs `make fuzz-build`;
 - a job that runs `make distro-check DISTRO=trixie` in a privileged container (mount namespaces);
+- a job that runs `make windows-check` (issue 31: the MinGW-w64 cross build and its tests under Wine);
 - every `uses:` pinned to a version (@...).
 
   ci_workflow.py WORKFLOW_YML             prints every fault; exit 0 when there is none
@@ -75,6 +76,8 @@ def check(workflow):
         container = job.get("container")
         if isinstance(container, dict) and "--privileged" not in str(container.get("options", "")):
             errors.append("the distro-check job's container is not --privileged (mmdebstrap, mount namespaces)")
+    if not any(re.search(r"\bmake windows-check\b", runs(j)) for j in jobs.values()):
+        errors.append("no job runs `make windows-check`")
     for name, job in jobs.items():
         for step in job.get("steps", []):
             uses = step.get("uses")
@@ -121,6 +124,7 @@ def breakages(workflow):
         edit("no fuzz build", lambda w: drop_step(w, "make fuzz-build", lambda s: "make fuzz-build" in str(s.get("run", "")))),
         edit("no distro check", lambda w: drop_step(w, "make distro-check", lambda s: "distro-check" in str(s.get("run", "")))),
         edit("unprivileged distro check", unprivileged),
+        edit("no windows check", lambda w: drop_step(w, "make windows-check", lambda s: "windows-check" in str(s.get("run", "")))),
         edit("unpinned action", unpin),
         edit("no pull_request trigger", lambda w: w.get("on", w.get(True)).pop("pull_request")),
     ]
@@ -165,7 +169,7 @@ def main():
         print(f"{path}: {error}")
     if errors:
         return 1
-    print(f"ok: {path} runs make test on debian:12, debian:13 and ubuntu-24.04, the fuzz build and the trixie check")
+    print(f"ok: {path} runs make test on debian:12, debian:13 and ubuntu-24.04, the fuzz build, the trixie check and the Windows check")
     return 0
 
 

@@ -20,11 +20,17 @@ set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 
+# pkg-config must not answer with Linux's packages: only the prefix's own .pc files (none are needed;
+# stb and tinygltf are then found as headers, as with vcpkg).
+set(ENV{PKG_CONFIG_LIBDIR} "${T10_WINDOWS_PREFIX}/lib/pkgconfig:${T10_WINDOWS_PREFIX}/share/pkgconfig")
+set(ENV{PKG_CONFIG_PATH} "")
+
 # Self-contained programs: libgcc, libstdc++ and winpthread linked in, so Wine (or a Windows
 # machine) needs no MinGW DLLs next to them.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-static")
+set(ZLIB_USE_STATIC_LIBS ON)
 # ctest and add_custom_command run the programs through Wine.
-find_program(T10_WINE NAMES wine wine64)
+find_program(T10_WINE NAMES wine)
 if(T10_WINE)
     set(CMAKE_CROSSCOMPILING_EMULATOR ${T10_WINE})
 endif()
