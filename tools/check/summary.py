@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The short summary `make check` prints from t10-grade's report.json: the score, what to fix first
-(the step t10-grade names in fix_first, else the failing check with the earliest tutorial step) with its tutorial link, what was measured and
-what was expected, the views that show that buffer, and where the full report is.
+(the step t10-grade names in fix_first, else the failing check with the earliest tutorial step) with
+its tutorial link, what was measured and what was expected, the views that show that buffer, and
+where the full report is.
 
 usage: summary.py REPORT.json [--site-url URL]
 
