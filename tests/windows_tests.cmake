@@ -1,6 +1,7 @@
 # The tests of a Windows build (MSVC with vcpkg, or the MinGW-w64 cross build that `make
-# windows-check` runs under Wine): the unit and GL tests, and each stage's golden comparison with its
-# proof that an altered image fails. Included from tests/CMakeLists.txt on WIN32 only.
+# windows-check` runs under Wine): the unit and GL tests, each stage's golden comparison with its
+# proof that an altered image fails, extras' frame against Part 3's, and students' parts. Included
+# from tests/CMakeLists.txt on WIN32 only.
 #
 # Cross-compiled, the Catch2 programs run once each (their tests are listed at run time, where
 # discovery would need Wine at build time); ctest starts them through CMAKE_CROSSCOMPILING_EMULATOR.
@@ -34,6 +35,15 @@ foreach(stage IN LISTS T10_GOLDEN_STAGES)
              COMMAND imgcompare ${GOLDEN}/${stage}.png ${GOLDEN}/${stage}.png ${GOLDEN}/${stage}.tolerance
                      --alter --expect-reject)
 endforeach()
+
+# extras/ with default settings renders exactly Part 3's frame (as on Linux, stage_tests.cmake).
+if(TARGET extras)
+    add_test(NAME "golden: extras reproduces tutorial10_part3_gaussian"
+             COMMAND ${CMAKE_COMMAND} "-DEMULATOR=${CMAKE_CROSSCOMPILING_EMULATOR}"
+                     -DSTAGE=$<TARGET_FILE:extras> -DIMGCOMPARE=$<TARGET_FILE:imgcompare>
+                     -DGOLDEN=${GOLDEN}/tutorial10_part3_gaussian -DOUT=${CMAKE_CURRENT_BINARY_DIR}/out/golden/extras
+                     "-DARGS=${golden_args}" -P ${CMAKE_CURRENT_SOURCE_DIR}/golden/golden_test.cmake)
+endif()
 
 # A student's own part (student/partN/, cmake/T10Student.cmake) against Part N's golden: how a Windows
 # student checks their work without the Linux-only grader. The program is built on demand

@@ -37,7 +37,7 @@ done
 step "cross-compiling the project into $build"
 if [ ! -f "$build/build.ninja" ]; then
     cmake -S "$root" -B "$build" -G Ninja --toolchain "$root/cmake/toolchains/mingw-w64-x86_64.cmake" \
-        -DT10_WINDOWS_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Debug -DT10_BUILD_EXTRAS=OFF \
+        -DT10_WINDOWS_PREFIX="$prefix" -DCMAKE_BUILD_TYPE=Debug \
         -DT10_STUDENT_DIR="$(cd "$students" && pwd)" >"$build.configure.log" 2>&1 || {
         cat "$build.configure.log"; echo "windows-check: the Windows configuration failed"; exit 1; }
 fi
