@@ -315,6 +315,6 @@ distro-check: deps
 # under Wine in Xvfb. Not part of `make test`: a fresh run takes longer than the whole suite may (the
 # numbers are in tools/windows_check/README.md). CI runs it as a job of its own.
 .PHONY: windows-check
-windows-check: PACKAGES += g++-mingw-w64-x86-64-posix libz-mingw-w64-dev wine wine64 dpkg-dev
+windows-check: PACKAGES += g++-mingw-w64-x86-64-posix libz-mingw-w64-dev wine wine64 dpkg-dev xvfb xauth
 windows-check: deps
 	tools/windows_check/windows_check.sh $(BUILD)/windows-deps $(BUILD)/windows
