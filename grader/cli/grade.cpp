@@ -640,14 +640,19 @@ Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(confi
         }
     }
 
+    // As root the jobs run as uids of their own: a checkout they cannot enter (inside a 0700 home) is
+    // staged where they can, or the run stops saying which folder and what to do.
+    if (!jobUids_.empty()) stageUnreachableMounts(projectMounts_, (workRoot_ / "project").string(), jobUids_.front(), isolation_);
     prepareInputs();
     prepareReference();
     // The reference host code (for submissions without Tutorial10.cpp) is built once here rather than
     // by each of the parallel jobs.
     const fs::path work = workRoot_ / "reference-host";
     makeDir(work, 0, 0755);
+    // Built from a copy in the work folder, like a submission: the job's uid may not reach the checkout.
+    copyFile(referenceStageDir() + "/Tutorial10.cpp", work / "Tutorial10.cpp", 0644);
     std::string log;
-    if (build(referenceStageDir() + "/Tutorial10.cpp", 0, work, log).empty()) {
+    if (build((work / "Tutorial10.cpp").string(), 0, work, log).empty()) {
         throw Error("the reference " + std::string(info_.stage) + "/Tutorial10.cpp does not build in the sandbox:\n" + log);
     }
 }
@@ -656,27 +661,10 @@ void Grader::chooseIsolation() {
     const bool root = ::geteuid() == 0;
     const int jobs = std::max(1, std::min<int>(config_.jobs, static_cast<int>(config_.submissions.size())));
     if (root && config_.isolation != "none") jobUids_ = pickJobUids(jobs);
-    if (config_.isolation == "none") {
-        isolation_ = Isolation::None;
-        std::cerr << "t10-grade: warning: --no-sandbox: student code runs as this user with only time and size limits\n";
+    isolation_ = t10::grade::chooseIsolation(config_.isolation, jobUids_.empty() ? 0 : jobUids_.front(), "t10-grade", std::cerr);
+    if (isolation_ == Isolation::None) {
+        jobUids_.clear();
         return;
-    }
-    if (config_.isolation == "uid") {
-        if (!root) throw Error("--isolation uid: the grader must run as root to run each job as its own uid");
-        isolation_ = Isolation::Uid;
-    } else {
-        const std::string why = probeNamespaces(root ? jobUids_.front() : 0);
-        if (why.empty()) {
-            isolation_ = Isolation::Namespaces;
-        } else if (config_.isolation == "namespaces") {
-            throw Error("--isolation namespaces: bubblewrap cannot start a sandbox here: " + why);
-        } else if (root) {
-            isolation_ = Isolation::Uid;
-            std::cerr << "t10-grade: warning: no user namespaces (" << why << "): falling back to one uid per job\n";
-        } else {
-            throw Error("no sandbox can be had here: bubblewrap fails (" + why + ") and the uid fallback needs root. "
-                        "Refusing to run student code; --no-sandbox runs it unprotected (unsafe)");
-        }
     }
     std::cerr << "t10-grade: student code runs with isolation " << isolationName(isolation_);
     if (!jobUids_.empty()) {
@@ -845,6 +833,12 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     const auto at = result.output.find("Mean:");
     check.tolerance = "mean FLIP <= 0.005: the reference renders identically on the same driver (0), an "
                       "equivalent rewrite measures below 1e-6, the subtlest known mistake 0.03";
+    // FLIP that cannot start (its venv's interpreter missing or out of the grader's reach) is the
+    // grader's failure, never the student's.
+    if (!result.timedOut && result.signal == 0 && (result.exitCode == 126 || result.exitCode == 127)) {
+        throw Error(std::string(T10_GRADE_FLIP) + " cannot be run (" + result.describe() + "): " + tail(result.output, 3) +
+                    " (make grade-deps installs it; its interpreter must be reachable by the user grading)");
+    }
     if (!result.ok() || at == std::string::npos) {
         // The frame passed the grader's own checks (a PNG of the case's size), so a frame FLIP still
         // cannot read is the submission's: a failed check, never the grader's failure.

@@ -10,20 +10,24 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <chrono>
 #include <csignal>
 #include <cstring>
 #include <dirent.h>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
 #include <grp.h>
 #include <pwd.h>
+#include <ostream>
 #include <sstream>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
+#include <time.h>
 #include <unistd.h>
 
 namespace t10::grade {
@@ -223,142 +227,188 @@ std::string probeNamespaces(uid_t uid) {
     return "bwrap " + result.describe() + ": " + result.output;
 }
 
-RunResult runSandboxed(const SandboxRun& run, const std::vector<std::string>& argv, const std::string& logFile) {
-    if (argv.empty()) throw Error("runSandboxed: no command");
-    // Orphans of a killed sandbox (its pid 1) come back to the grader, which waits for them.
-    ::prctl(PR_SET_CHILD_SUBREAPER, 1);
-    const bool namespaces = run.isolation == Isolation::Namespaces;
+namespace {
 
-    // Everything the child uses, built now.
+// What the child of runSandboxed needs, all of it made before fork(): the grader is multithreaded,
+// so the child only makes system calls.
+struct ChildPlan {
     std::vector<std::string> command;
-    std::string options;
-    if (namespaces) {
-        for (const std::string& option : bwrapOptions(run)) options += option + '\0';
-        command = {"bwrap", "--args", "3", "--"};
-        command.insert(command.end(), argv.begin(), argv.end());
-    } else {
-        for (const std::string& arg : argv) command.push_back(run.path(arg));
-    }
     std::vector<char*> args;
-    for (std::string& arg : command) args.push_back(arg.data());
-    args.push_back(nullptr);
-    std::vector<std::string> envCopy = run.env;
+    std::vector<std::string> envCopy;
     std::vector<char*> env;
-    for (std::string& variable : envCopy) env.push_back(variable.data());
-    env.push_back(nullptr);
-    const std::string program = namespaces ? kBwrap : command.front();
-    // bwrap changes into the working directory inside (--chdir); the other isolations here.
-    const std::string directory = run.workingDirectory.empty() || namespaces ? "" : run.path(run.workingDirectory);
-
-    // A non-root grader keeps its own uid: RLIMIT_NPROC then counts its other processes too.
+    std::string program;
+    std::string directory;                 // the uid and none isolations change into it here
+    std::string options;                   // bwrap's, NUL-separated (namespaces)
     rlim_t processes = RLIM_INFINITY;
-    if (run.uid != 0) processes = static_cast<rlim_t>(run.limits.processes);
-    else if (::geteuid() != 0) processes = static_cast<rlim_t>(countTasksOf(::geteuid()) + run.limits.processes);
+    int log = -1;
+    int optionsPipe[2] = {-1, -1};
+    int infoPipe[2] = {-1, -1};
+};
 
-    const int log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0600);
-    if (log < 0) throw Error(logFile + ": cannot create log file: " + std::strerror(errno));
-    int optionsPipe[2] = {-1, -1}, infoPipe[2] = {-1, -1};
+void planChild(const SandboxRun& run, const std::vector<std::string>& argv, const std::string& logFile, ChildPlan& plan) {
+    const bool namespaces = run.isolation == Isolation::Namespaces;
     if (namespaces) {
-        if (::pipe2(optionsPipe, O_CLOEXEC) != 0 || ::pipe2(infoPipe, O_CLOEXEC) != 0) {
-            ::close(log);
-            throw Error(std::string("pipe: ") + std::strerror(errno));
-        }
-        for (int& fd : optionsPipe) fd = highDescriptor(fd);
-        for (int& fd : infoPipe) fd = highDescriptor(fd);
-        // Small (a few KiB): fits the pipe's buffer, so the write does not wait for bwrap.
-        if (::write(optionsPipe[1], options.data(), options.size()) != static_cast<ssize_t>(options.size())) {
-            throw Error(std::string("writing bwrap's options: ") + std::strerror(errno));
-        }
-        ::close(optionsPipe[1]);
-        ::fcntl(infoPipe[0], F_SETFL, O_NONBLOCK);
+        for (const std::string& option : bwrapOptions(run)) plan.options += option + '\0';
+        plan.command = {"bwrap", "--args", "3", "--"};
+        plan.command.insert(plan.command.end(), argv.begin(), argv.end());
+    } else {
+        for (const std::string& arg : argv) plan.command.push_back(run.path(arg));
     }
+    for (std::string& arg : plan.command) plan.args.push_back(arg.data());
+    plan.args.push_back(nullptr);
+    plan.envCopy = run.env;
+    for (std::string& variable : plan.envCopy) plan.env.push_back(variable.data());
+    plan.env.push_back(nullptr);
+    plan.program = namespaces ? kBwrap : plan.command.front();
+    // bwrap changes into the working directory inside (--chdir); the other isolations here.
+    if (!run.workingDirectory.empty() && !namespaces) plan.directory = run.path(run.workingDirectory);
+    // A non-root grader keeps its own uid: RLIMIT_NPROC then counts its other processes too.
+    if (run.uid != 0) plan.processes = static_cast<rlim_t>(run.limits.processes);
+    else if (::geteuid() != 0) plan.processes = static_cast<rlim_t>(countTasksOf(::geteuid()) + run.limits.processes);
 
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-        ::close(log);
-        throw Error(std::string("fork: ") + std::strerror(errno));
+    plan.log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (plan.log < 0) throw Error(logFile + ": cannot create log file: " + std::strerror(errno));
+    if (!namespaces) return;
+    if (::pipe2(plan.optionsPipe, O_CLOEXEC) != 0 || ::pipe2(plan.infoPipe, O_CLOEXEC) != 0) {
+        ::close(plan.log);
+        throw Error(std::string("pipe: ") + std::strerror(errno));
     }
-    if (pid == 0) {
-        ::setsid(); // its own session and process group: no terminal, killed as a group
-        setLimit(RLIMIT_CPU, static_cast<rlim_t>(run.limits.cpuSeconds));
+    for (int& fd : plan.optionsPipe) fd = highDescriptor(fd);
+    for (int& fd : plan.infoPipe) fd = highDescriptor(fd);
+    // Small (a few KiB): fits the pipe's buffer, so the write does not wait for bwrap.
+    if (::write(plan.optionsPipe[1], plan.options.data(), plan.options.size()) != static_cast<ssize_t>(plan.options.size())) {
+        throw Error(std::string("writing bwrap's options: ") + std::strerror(errno));
+    }
+    ::close(plan.optionsPipe[1]);
+    ::fcntl(plan.infoPipe[0], F_SETFL, O_NONBLOCK);
+}
+
+// The child: limits, its own session, the log as output, the job's uid, then exec. Never returns.
+[[noreturn]] void execChild(const SandboxRun& run, ChildPlan& plan) {
+    ::setsid(); // its own session and process group: no terminal, killed as a group
+    setLimit(RLIMIT_CPU, static_cast<rlim_t>(run.limits.cpuSeconds));
 #ifndef __SANITIZE_ADDRESS__
-        // Not in an AddressSanitizer build: sanitized programs reserve terabytes of shadow memory.
-        setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.memoryMiB) * 1024 * 1024);
+    // Not in an AddressSanitizer build: sanitized programs reserve terabytes of shadow memory.
+    setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.memoryMiB) * 1024 * 1024);
 #endif
-        setLimit(RLIMIT_CORE, 0);
-        setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(run.limits.fileMiB) * 1024 * 1024);
-        setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.openFiles));
-        if (processes != RLIM_INFINITY) setLimit(RLIMIT_NPROC, processes);
-        ::dup2(log, STDOUT_FILENO);
-        ::dup2(log, STDERR_FILENO);
-        const int null = ::open("/dev/null", O_RDONLY);
-        if (null >= 0) ::dup2(null, STDIN_FILENO);
-        if (namespaces) {
-            ::dup2(optionsPipe[0], 3);
-            ::dup2(infoPipe[1], 4);
-        }
-        if (run.uid != 0) {
-            if (::setgroups(0, nullptr) != 0 || ::setresgid(run.uid, run.uid, run.uid) != 0 ||
-                ::setresuid(run.uid, run.uid, run.uid) != 0) {
-                static const char kNoUid[] = "t10-grade: cannot switch to the job's uid\n";
-                [[maybe_unused]] auto written = ::write(STDERR_FILENO, kNoUid, sizeof kNoUid - 1);
-                _exit(126);
-            }
-        }
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the grader
-        if (!directory.empty() && ::chdir(directory.c_str()) != 0) _exit(126);
-        ::execve(program.c_str(), args.data(), env.data());
-        static const char kFailed[] = "cannot run the command: ";
-        const char* reason = ::strerror(errno);
-        [[maybe_unused]] auto written = ::write(STDERR_FILENO, kFailed, sizeof kFailed - 1);
-        written = ::write(STDERR_FILENO, program.c_str(), program.size());
-        written = ::write(STDERR_FILENO, ": ", 2);
-        written = ::write(STDERR_FILENO, reason, std::strlen(reason));
-        _exit(127);
+    setLimit(RLIMIT_CORE, 0);
+    setLimit(RLIMIT_FSIZE, static_cast<rlim_t>(run.limits.fileMiB) * 1024 * 1024);
+    setLimit(RLIMIT_NOFILE, static_cast<rlim_t>(run.limits.openFiles));
+    if (plan.processes != RLIM_INFINITY) setLimit(RLIMIT_NPROC, plan.processes);
+    ::dup2(plan.log, STDOUT_FILENO);
+    ::dup2(plan.log, STDERR_FILENO);
+    const int null = ::open("/dev/null", O_RDONLY);
+    if (null >= 0) ::dup2(null, STDIN_FILENO);
+    if (run.isolation == Isolation::Namespaces) {
+        ::dup2(plan.optionsPipe[0], 3);
+        ::dup2(plan.infoPipe[1], 4);
     }
-    ::close(log);
-    if (namespaces) {
-        ::close(optionsPipe[0]);
-        ::close(infoPipe[1]);
+    if (run.uid != 0) {
+        if (::setgroups(0, nullptr) != 0 || ::setresgid(run.uid, run.uid, run.uid) != 0 || ::setresuid(run.uid, run.uid, run.uid) != 0) {
+            static const char kNoUid[] = "t10-grade: cannot switch to the job's uid\n";
+            [[maybe_unused]] auto written = ::write(STDERR_FILENO, kNoUid, sizeof kNoUid - 1);
+            _exit(126);
+        }
     }
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL); // dies with the grader
+    if (!plan.directory.empty() && ::chdir(plan.directory.c_str()) != 0) _exit(126);
+    // ETXTBSY: another job's child, forked while the grader was writing this program's copy, holds
+    // that descriptor until its own exec (O_CLOEXEC closes it only then). It passes within
+    // microseconds: retry for up to a second.
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        ::execve(plan.program.c_str(), plan.args.data(), plan.env.data());
+        if (errno != ETXTBSY) break;
+        const timespec pause{0, 10 * 1000 * 1000};
+        ::nanosleep(&pause, nullptr);
+    }
+    static const char kFailed[] = "cannot run the command: ";
+    const char* reason = ::strerror(errno);
+    [[maybe_unused]] auto written = ::write(STDERR_FILENO, kFailed, sizeof kFailed - 1);
+    written = ::write(STDERR_FILENO, plan.program.c_str(), plan.program.size());
+    written = ::write(STDERR_FILENO, ": ", 2);
+    written = ::write(STDERR_FILENO, reason, std::strlen(reason));
+    _exit(127);
+}
 
-    RunResult result;
-    int status = 0;
+// Waits for `pid` until the wall limit, then kills its process group; `status` is its wait status.
+void waitWithLimit(pid_t pid, double wallSeconds, std::chrono::steady_clock::time_point start, int& status, RunResult& result) {
     for (;;) {
         const pid_t done = ::waitpid(pid, &status, WNOHANG);
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (done == pid) {
             result.wallSeconds = elapsed;
-            break;
+            return;
         }
         if (done < 0 && errno != EINTR) throw Error(std::string("waitpid: ") + std::strerror(errno));
-        if (elapsed > run.limits.wallSeconds) {
+        if (elapsed > wallSeconds) {
             ::kill(-pid, SIGKILL);
             ::waitpid(pid, &status, 0);
             result.timedOut = true;
             result.wallSeconds = elapsed;
-            break;
+            return;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    ::kill(-pid, SIGKILL);
-    if (namespaces) {
-        // The sandbox's pid 1: when bwrap was killed it came back to the grader (subreaper) and died
-        // of its parent-death signal; it is reaped only after every process of its namespace is gone.
-        const pid_t inner = childPidFromInfo(infoPipe[0]);
-        ::close(infoPipe[0]);
-        const auto waitStart = std::chrono::steady_clock::now();
-        while (inner > 0) {
-            const pid_t reaped = ::waitpid(inner, nullptr, WNOHANG);
-            if (reaped == inner || (reaped < 0 && errno == ECHILD)) break; // reaped, or bwrap reaped it
-            if (std::chrono::steady_clock::now() - waitStart > std::chrono::seconds(5)) {
-                throw Error("the sandbox's pid namespace survives SIGKILL for 5 s");
-            }
-            ::kill(inner, SIGKILL);
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
+// The sandbox's pid 1: when bwrap was killed it came back to the grader (subreaper) and died of its
+// parent-death signal; it is reaped only after every process of its namespace is gone.
+void reapSandbox(int infoFd) {
+    const pid_t inner = childPidFromInfo(infoFd);
+    ::close(infoFd);
+    const auto waitStart = std::chrono::steady_clock::now();
+    while (inner > 0) {
+        const pid_t reaped = ::waitpid(inner, nullptr, WNOHANG);
+        if (reaped == inner || (reaped < 0 && errno == ECHILD)) break; // reaped, or bwrap reaped it
+        if (std::chrono::steady_clock::now() - waitStart > std::chrono::seconds(5)) {
+            throw Error("the sandbox's pid namespace survives SIGKILL for 5 s");
         }
+        ::kill(inner, SIGKILL);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
+}
+
+// The log is the grader's own file; at most its last 64 KiB.
+std::string logTail(const std::string& logFile) {
+    std::string text;
+    const int in = ::open(logFile.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (in < 0) return text;
+    constexpr off_t kKeep = 64 * 1024;
+    const off_t size = ::lseek(in, 0, SEEK_END);
+    ::lseek(in, size > kKeep ? size - kKeep : 0, SEEK_SET);
+    char buffer[8192];
+    for (ssize_t n; (n = ::read(in, buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<std::size_t>(n));
+    ::close(in);
+    return text;
+}
+
+} // namespace
+
+RunResult runSandboxed(const SandboxRun& run, const std::vector<std::string>& argv, const std::string& logFile) {
+    if (argv.empty()) throw Error("runSandboxed: no command");
+    // Orphans of a killed sandbox (its pid 1) come back to the grader, which waits for them.
+    ::prctl(PR_SET_CHILD_SUBREAPER, 1);
+    const bool namespaces = run.isolation == Isolation::Namespaces;
+    ChildPlan plan;
+    planChild(run, argv, logFile, plan);
+
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid < 0) {
+        ::close(plan.log);
+        throw Error(std::string("fork: ") + std::strerror(errno));
+    }
+    if (pid == 0) execChild(run, plan);
+    ::close(plan.log);
+    if (namespaces) {
+        ::close(plan.optionsPipe[0]);
+        ::close(plan.infoPipe[1]);
+    }
+    RunResult result;
+    int status = 0;
+    waitWithLimit(pid, run.limits.wallSeconds, start, status, result);
+    ::kill(-pid, SIGKILL);
+    if (namespaces) reapSandbox(plan.infoPipe[0]);
     killAllOfUid(run.uid);
     if (!result.timedOut) {
         if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
@@ -369,18 +419,120 @@ RunResult runSandboxed(const SandboxRun& run, const std::vector<std::string>& ar
             result.exitCode = -1;
         }
     }
-    // The log is the grader's own file; read at most its last 64 KiB.
-    const int in = ::open(logFile.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (in >= 0) {
-        constexpr off_t kKeep = 64 * 1024;
-        const off_t size = ::lseek(in, 0, SEEK_END);
-        const off_t from = size > kKeep ? size - kKeep : 0;
-        ::lseek(in, from, SEEK_SET);
-        char buffer[8192];
-        for (ssize_t n; (n = ::read(in, buffer, sizeof buffer)) > 0;) result.output.append(buffer, static_cast<std::size_t>(n));
-        ::close(in);
-    }
+    result.output = logTail(logFile);
     return result;
+}
+
+Isolation chooseIsolation(const std::string& asked, uid_t uid, const std::string& program, std::ostream& log) {
+    if (asked == "none") {
+        log << program << ": warning: --no-sandbox: student code runs as this user with only time and size limits\n";
+        return Isolation::None;
+    }
+    const bool root = ::geteuid() == 0;
+    if (asked == "uid") {
+        if (!root) throw Error("--isolation uid: the grader must run as root to run each job as its own uid");
+        return Isolation::Uid;
+    }
+    const std::string why = probeNamespaces(root ? uid : 0);
+    if (why.empty()) return Isolation::Namespaces;
+    if (asked == "namespaces") throw Error("--isolation namespaces: bubblewrap cannot start a sandbox here: " + why);
+    if (!root) {
+        throw Error("no sandbox can be had here: bubblewrap fails (" + why + ") and the uid fallback needs root. "
+                    "Refusing to run student code; --no-sandbox runs it unprotected (unsafe)");
+    }
+    log << program << ": warning: no user namespaces (" << why << "): falling back to one uid per job\n";
+    return Isolation::Uid;
+}
+
+Unreachable firstUnreachable(uid_t uid, const std::vector<std::string>& paths) {
+    if (uid == 0 || paths.empty()) return {};
+    // A child switched to the uid tries each path: the kernel's own answer (modes, ACLs, mounts).
+    std::vector<std::vector<char>> copies;
+    for (const std::string& path : paths) copies.emplace_back(path.c_str(), path.c_str() + path.size() + 1);
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw Error(std::string("pipe: ") + std::strerror(errno));
+    const pid_t child = ::fork();
+    if (child == 0) {
+        if (::setgroups(0, nullptr) != 0 || ::setresgid(uid, uid, uid) != 0 || ::setresuid(uid, uid, uid) != 0) _exit(126);
+        for (std::uint32_t i = 0; i < copies.size(); ++i) {
+            char* path = copies[i].data();
+            if (::access(path, R_OK) == 0) continue;
+            // The first folder on the way that the uid cannot enter, else the path itself.
+            std::size_t stop = std::strlen(path);
+            for (char* slash = std::strchr(path + 1, '/'); slash != nullptr; slash = std::strchr(slash + 1, '/')) {
+                *slash = '\0';
+                const bool enters = ::access(path, X_OK) == 0;
+                *slash = '/';
+                if (!enters) {
+                    stop = static_cast<std::size_t>(slash - path);
+                    break;
+                }
+            }
+            [[maybe_unused]] auto written = ::write(fds[1], &i, sizeof i);
+            written = ::write(fds[1], path, stop);
+            _exit(1);
+        }
+        _exit(0);
+    }
+    ::close(fds[1]);
+    if (child < 0) {
+        ::close(fds[0]);
+        throw Error(std::string("fork: ") + std::strerror(errno));
+    }
+    std::string answer;
+    char buffer[4096];
+    for (ssize_t n; (n = ::read(fds[0], buffer, sizeof buffer)) > 0;) answer.append(buffer, static_cast<std::size_t>(n));
+    ::close(fds[0]);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {};
+    std::uint32_t index = 0;
+    if (answer.size() < sizeof index) throw Error("cannot test what uid " + std::to_string(uid) + " may read");
+    std::memcpy(&index, answer.data(), sizeof index);
+    if (index >= paths.size()) throw Error("cannot test what uid " + std::to_string(uid) + " may read");
+    return {paths[index], answer.substr(sizeof index)};
+}
+
+std::string Unreachable::explain() const {
+    std::ostringstream text;
+    text << "the job uids cannot read " << path;
+    struct stat info {};
+    if (folder != path && ::stat(folder.c_str(), &info) == 0) {
+        text << ": " << folder << " lets no one else in (mode 0" << std::oct << (info.st_mode & 07777) << std::dec << ")";
+    }
+    return text.str();
+}
+
+void stageUnreachableMounts(std::vector<Mount>& mounts, const std::string& staging, uid_t uid, Isolation isolation) {
+    namespace fs = std::filesystem;
+    if (uid == 0 || isolation == Isolation::None) return;
+    for (std::size_t i = 0; i < mounts.size(); ++i) {
+        Mount& mount = mounts[i];
+        if (mount.writable) continue;
+        const Unreachable blocked = firstUnreachable(uid, {mount.host});
+        if (blocked.path.empty()) continue;
+        if (isolation == Isolation::Uid && mount.inside == mount.host) {
+            throw Error(blocked.explain() + ". Under --isolation uid student code sees the host's files at their paths: "
+                        "move the checkout to a folder others may enter, let them pass (chmod o+x " + blocked.folder +
+                        "), or grade with --isolation namespaces");
+        }
+        if (!fs::exists(staging)) {
+            fs::create_directories(staging);
+            fs::permissions(staging, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                         fs::perms::others_read | fs::perms::others_exec);
+        }
+        // Hard links where the staging folder is on the same file system (no copy), else a copy.
+        const fs::path to = fs::path(staging) / std::to_string(i);
+        std::error_code linked;
+        fs::copy(mount.host, to, fs::copy_options::recursive | fs::copy_options::create_hard_links, linked);
+        if (linked) {
+            fs::remove_all(to);
+            fs::copy(mount.host, to, fs::copy_options::recursive);
+        }
+        const Unreachable still = firstUnreachable(uid, {to.string()});
+        if (!still.path.empty()) throw Error(blocked.explain() + ", nor its copy: " + still.explain());
+        mount.host = to.string();
+    }
 }
 
 } // namespace t10::grade

@@ -13,6 +13,7 @@
 #pragma once
 #include "isolation/run_limited.hpp"
 
+#include <iosfwd>
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -55,6 +56,27 @@ std::string probeNamespaces(uid_t uid);
 std::vector<uid_t> pickJobUids(int count);
 // Kills every process of `uid` and returns once none is left (or after 5 s).
 void killAllOfUid(uid_t uid);
+
+// The isolation to run student code with: `asked` is auto (namespaces where bwrap starts, as `uid`
+// when not 0, else the uid fallback as root), namespaces, uid or none. Throws t10::Error when the one
+// asked for cannot be had, or when auto finds none (never runs student code unprotected unasked).
+// Warnings go to `log`, prefixed with `program`.
+Isolation chooseIsolation(const std::string& asked, uid_t uid, const std::string& program, std::ostream& log);
+
+// A path a uid cannot read, and the folder on its way that stops it (a home made 0700).
+struct Unreachable {
+    std::string path;   // empty: every path is readable
+    std::string folder; // the first folder of `path` the uid cannot enter, else `path` itself
+    std::string explain() const; // "the job uids cannot read P: F lets no one else in (mode 0700)"
+};
+// Asks the kernel, from a child switched to `uid`, whether it can read each of `paths`.
+Unreachable firstUnreachable(uid_t uid, const std::vector<std::string>& paths);
+// Makes each read-only mount readable by `uid` (the grader's environment is never the student's
+// fault): one it cannot reach, such as a checkout inside a 0700 home, is linked or copied under
+// `staging` and mounted from there. Under the uid isolation a mount seen at its host path (the common
+// shaders and assets, whose paths are compiled into the project's libraries) cannot move: throws
+// t10::Error naming the folder that stops the uid and what to do.
+void stageUnreachableMounts(std::vector<Mount>& mounts, const std::string& staging, uid_t uid, Isolation isolation);
 
 // Runs argv (inside paths) under the sandbox; stdout and stderr go to logFile (a host path the step
 // cannot see). Throws t10::Error when the sandbox cannot be started at all.

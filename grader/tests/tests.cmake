@@ -146,6 +146,13 @@ add_test(NAME "grade: submission files listed, empty and incomplete submissions 
 set_tests_properties("grade: submission files listed, empty and incomplete submissions get their status" PROPERTIES
                      SKIP_RETURN_CODE 77)
 
+# A checkout inside a 0700 folder (issue 29): as root the job uids cannot enter it; graded 100 with the
+# namespaces isolation (staged copies), one line and grader-error with uid, and as the owning user.
+add_test(NAME "grade: a checkout inside a 0700 folder, as root and as its owner"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/private_checkout.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
+                 ${GRADE_OUT}/private-checkout)
+set_tests_properties("grade: a checkout inside a 0700 folder, as root and as its owner" PROPERTIES SKIP_RETURN_CODE 77)
+
 # --- Hostile submissions (issue 19): each attack on the grader is contained, honest submissions
 # graded beside them keep 100. Under namespaces where bwrap works, and under the uid fallback where
 # the tests run as root; each skips (77) saying why elsewhere. One at a time: they count processes.
