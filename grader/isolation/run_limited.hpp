@@ -1,5 +1,5 @@
 // Runs a program as a child process under limits (t10-grade runs its trusted tools with it, the
-// reference and FLIP; student code goes through sandbox.hpp; t10-grade-tga runs converters): wall time (the whole
+// reference and FLIP; student code, a stage's or a TGA loader's, goes through sandbox.hpp): wall time (the whole
 // process group is killed when it runs out, so a hanging shader cannot stall the grader), CPU
 // time and address space (setrlimit), with stdout and stderr captured into one log file.
 #pragma once

@@ -119,25 +119,29 @@ foreach(case
     add_test(NAME "grade: usage t10-grade ${label}" COMMAND ${EXPECT} ${code} "${regex}" -- ${PROJECT_BINARY_DIR}/bin/t10-grade ${case})
 endforeach()
 
-# --- t10-grade-tga: full marks for the project's tga2png, each fault of tga_mutant caught. ---------
-add_executable(tga_mutant tests/tga_mutant.cpp)
-target_link_libraries(tga_mutant PRIVATE t10_common t10_flags)
-set(GRADE_TGA ${PROJECT_BINARY_DIR}/bin/t10-grade-tga --timeout 2)
-add_test(NAME "grade tga: tga2png gets full marks"
-         COMMAND ${EXPECT} 0 "score 100 \\(" -- ${GRADE_TGA} "${PROJECT_BINARY_DIR}/bin/tga2png {in} {out}")
-foreach(case "flip;FAIL  rgb24_raw_bl: wrong orientation" "swap;FAIL  rgb24_raw_bl: wrong channel order"
-             "crash;FAIL  rgb24_raw_bl: crash" "hang;FAIL  rgb24_rle_bl: hang"
-             "accept;FAIL  malformed_zero_width: accepted a malformed file")
-    list(GET case 0 mode)
-    list(GET case 1 regex)
-    add_test(NAME "grade tga: catches a converter that does --${mode}"
-             COMMAND ${EXPECT} 0 "${regex}" -- ${GRADE_TGA} "${PROJECT_BINARY_DIR}/bin/tga_mutant --${mode} {in} {out}")
-    # In the asan preset the mutant is sanitized too: let its SIGSEGV kill it as in a plain build
-    # (AddressSanitizer would otherwise catch the signal and exit with code 1). No effect elsewhere.
-    set_tests_properties("grade tga: catches a converter that does --${mode}" PROPERTIES ENVIRONMENT "ASAN_OPTIONS=handle_segv=0")
+# --- t10-grade-tga grades a loader's source (tga.cpp) in the sandbox (tests/tga/tga_loaders.py writes
+# the submissions from common/content/src/tga.cpp). The project's loader scores 100 and each mutant
+# (flip, swap, crash, hang, accept) fails the case it breaks with its verdict: shown to fail with a
+# grader that counts every case as passed (each mutant "expected below 100 (got 100)").
+set(GRADE_TGA_LOADERS ${Python3_EXECUTABLE} ${GRADE_TESTS}/tga/tga_loaders.py)
+add_test(NAME "grade tga: the project's loader scores 100, each mutant fails with its verdict"
+         COMMAND ${GRADE_TGA_LOADERS} mutants ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${GRADE_OUT}/tga-mutants)
+set_tests_properties("grade tga: the project's loader scores 100, each mutant fails with its verdict" PROPERTIES SKIP_RETURN_CODE 77)
+# The cheat (decodes the PNG beside its input: 100 with the command mode before issue 29) passes no
+# valid case, and the attacks are contained: shown to fail with the reference PNG copied beside the
+# input in the case's folder (the cheat passes all 18 valid cases, read_reference reads it).
+foreach(isolation namespaces uid)
+    add_test(NAME "grade tga: the cheat and hostile loaders are contained (${isolation})"
+             COMMAND ${GRADE_TGA_LOADERS} ${isolation} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade-tga
+                     ${GRADE_OUT}/tga-hostile-${isolation})
+    set_tests_properties("grade tga: the cheat and hostile loaders are contained (${isolation})" PROPERTIES SKIP_RETURN_CODE 77)
 endforeach()
-add_test(NAME "grade tga: usage without {in} {out}"
-         COMMAND ${EXPECT} 2 "must contain \\{in\\} and \\{out\\}" -- ${GRADE_TGA} "tga2png")
+foreach(case "2;the command mode is gone;tga2png {in} {out}" "2;/nonexistent-loader: not a folder;/nonexistent-loader"
+             "2;--timeout 0: expected 1 to 600 seconds;--timeout;0;${PROJECT_SOURCE_DIR}")
+    list(POP_FRONT case code regex)
+    string(REPLACE ";" " " label "${case}")
+    add_test(NAME "grade tga: usage t10-grade-tga ${label}" COMMAND ${EXPECT} ${code} "${regex}" -- ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${case})
+endforeach()
 
 # The copy-in: empty, README-only, wrong-case and odd files get their status and file list.
 add_test(NAME "grade: submission files listed, empty and incomplete submissions get their status"
