@@ -44,6 +44,7 @@ help:
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
 	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
+	@echo "make bench-grader  grade the grader's test batches with a fresh cache: submissions per minute, CPU s and peak memory each"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
 	@echo "make gradescope PART=1|2|3  package a Gradescope autograder into $(OUT)/gradescope/partN/autograder.zip"
@@ -220,6 +221,13 @@ grade-args:
 grade check: PACKAGES += catch2 bubblewrap
 grade: grade-args build grade-deps
 	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
+
+# make bench-grader: what grading a class costs (grader/bench_grader.py): the grader's test batches (every
+# part's references, known mistakes, fitted parameters and broken submissions) graded with a fresh
+# cache into $(OUT)/bench-grader/; prints submissions per minute, CPU seconds and peak memory per submission.
+.PHONY: bench-grader
+bench-grader: build grade-deps
+	python3 grader/bench_grader.py $(BIN)/t10-grade grader/tests/make_submissions.py $(CURDIR) $(OUT)/bench-grader $(GRADE_JOBS)
 
 # The grader's tests need FLIP too; without it (no network for PyPI) they report themselves skipped.
 grade-deps-or-skip:
