@@ -47,6 +47,7 @@ help:
 	@echo "make bench-grader  grade the grader's test batches with a fresh cache: submissions per minute, CPU s and peak memory each"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
+	@echo "make grader-packages  print the packages make grader installs (grader/platforms/install_grader.sh checks them)"
 	@echo "make gradescope PART=1|2|3  package a Gradescope autograder into $(OUT)/gradescope/partN/autograder.zip"
 	@echo "make prairielearn PART=1|2|3  write a PrairieLearn external grader into $(OUT)/prairielearn/partN/"
 	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
