@@ -1,17 +1,14 @@
-// Implementation of the limited child process; see run_limited.hpp.
+// Implementation of the trusted tools' runs; see run_limited.hpp. The process itself is started by
+// the one process runner, runSandboxed (sandbox.cpp), with no isolation.
 #include "isolation/run_limited.hpp"
 
+#include "isolation/sandbox.hpp"
 #include "t10/error.hpp"
 
-#include <chrono>
-#include <csignal>
+#include <algorithm>
+#include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
-#include <fstream>
 #include <sstream>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 
 namespace t10::grade {
@@ -28,99 +25,50 @@ std::string RunResult::describe() const {
     return text.str();
 }
 
+namespace {
+
+// argv[0] as execvp would find it: a name without '/' is looked up on PATH.
+std::string onPath(const std::string& program) {
+    if (program.find('/') != std::string::npos) return program;
+    const char* path = std::getenv("PATH");
+    std::string folders = path != nullptr ? path : "/usr/bin:/bin";
+    for (std::size_t start = 0; start <= folders.size();) {
+        const std::size_t end = std::min(folders.find(':', start), folders.size());
+        const std::string candidate = (end == start ? std::string(".") : folders.substr(start, end - start)) + "/" + program;
+        if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+        start = end + 1;
+    }
+    return program;
+}
+
+} // namespace
+
 RunResult runLimited(const std::vector<std::string>& argv, const Limits& limits, const std::string& logFile,
                      const std::string& workingDirectory, const std::vector<std::string>& environment) {
     if (argv.empty()) throw Error("runLimited: no command");
-    const int log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (log < 0) throw Error(logFile + ": cannot create log file: " + std::strerror(errno));
-    std::vector<char*> args;
-    for (const std::string& arg : argv) args.push_back(const_cast<char*>(arg.c_str()));
-    args.push_back(nullptr);
-    // The environment, built before fork(): the child of a multithreaded parent must not allocate.
-    std::vector<std::string> variables = environment;
+    // The one process runner (sandbox.hpp) with no isolation: the grader's own user and environment,
+    // which `environment` extends or overrides.
+    SandboxRun run;
+    run.isolation = Isolation::None;
+    run.limits.wallSeconds = limits.wallSeconds;
+    run.limits.cpuSeconds = limits.cpuSeconds;
+    run.limits.memoryMiB = limits.memoryMiB;
+    // Trusted tools: no caps on files or processes beyond the system's.
+    run.limits.fileMiB = 1 << 20;
+    run.limits.openFiles = 4096;
+    run.limits.processes = 1 << 20;
+    run.workingDirectory = workingDirectory;
+    run.env = environment;
     for (char** e = environ; *e != nullptr; ++e) {
         const std::string variable = *e;
-        const std::string name = variable.substr(0, variable.find('='));
-        bool replaced = false;
-        for (const std::string& v : environment) replaced = replaced || v.rfind(name + "=", 0) == 0;
-        if (!replaced) variables.push_back(variable);
+        const std::string name = variable.substr(0, variable.find('=') + 1);
+        const bool overridden = std::any_of(environment.begin(), environment.end(),
+                                            [&](const std::string& v) { return v.rfind(name, 0) == 0; });
+        if (!overridden) run.env.push_back(variable);
     }
-    std::vector<char*> env;
-    for (std::string& variable : variables) env.push_back(variable.data());
-    env.push_back(nullptr);
-
-    const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
-    if (pid < 0) {
-        ::close(log);
-        throw Error(std::string("fork: ") + std::strerror(errno));
-    }
-    if (pid == 0) {
-        // The child: its own process group (so the whole group can be killed), limits, log as output.
-        ::setpgid(0, 0);
-        const rlim_t cpu = static_cast<rlim_t>(limits.cpuSeconds);
-        const rlimit cpuLimit{cpu, cpu + 1};
-        ::setrlimit(RLIMIT_CPU, &cpuLimit);
-#ifndef __SANITIZE_ADDRESS__
-        // Not in an AddressSanitizer build: the sanitized programs it runs reserve terabytes of
-        // shadow address space at start-up and abort under any RLIMIT_AS (wall and CPU limits stay).
-        const rlim_t bytes = static_cast<rlim_t>(limits.memoryMiB) * 1024 * 1024;
-        const rlimit memoryLimit{bytes, bytes};
-        ::setrlimit(RLIMIT_AS, &memoryLimit);
-#endif
-        const rlimit noCore{0, 0};
-        ::setrlimit(RLIMIT_CORE, &noCore);
-        ::dup2(log, STDOUT_FILENO);
-        ::dup2(log, STDERR_FILENO);
-        const int null = ::open("/dev/null", O_RDONLY);
-        if (null >= 0) ::dup2(null, STDIN_FILENO);
-        if (!workingDirectory.empty() && ::chdir(workingDirectory.c_str()) != 0) _exit(126);
-        ::execvpe(args[0], args.data(), env.data());
-        // Only async-signal-safe calls between fork and exec: the parent may be multithreaded.
-        static const char kFailed[] = "cannot run the command: ";
-        const char* reason = ::strerror(errno);
-        [[maybe_unused]] auto written = ::write(STDERR_FILENO, kFailed, sizeof kFailed - 1);
-        written = ::write(STDERR_FILENO, args[0], std::strlen(args[0]));
-        written = ::write(STDERR_FILENO, ": ", 2);
-        written = ::write(STDERR_FILENO, reason, std::strlen(reason));
-        _exit(127);
-    }
-    ::close(log);
-    ::setpgid(pid, pid); // also from the parent, so the group exists before any kill
-
-    RunResult result;
-    int status = 0;
-    for (;;) {
-        const pid_t done = ::waitpid(pid, &status, WNOHANG);
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (done == pid) {
-            result.wallSeconds = elapsed;
-            break;
-        }
-        if (done < 0 && errno != EINTR) throw Error(std::string("waitpid: ") + std::strerror(errno));
-        if (elapsed > limits.wallSeconds) {
-            ::kill(-pid, SIGKILL);
-            ::waitpid(pid, &status, 0);
-            result.timedOut = true;
-            result.wallSeconds = elapsed;
-            break;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    // Whatever the child left running in its group (it should be nothing) goes too.
-    ::kill(-pid, SIGKILL);
-    if (!result.timedOut) {
-        if (WIFSIGNALED(status)) {
-            result.signal = WTERMSIG(status);
-        } else if (WIFEXITED(status)) {
-            result.exitCode = WEXITSTATUS(status);
-        }
-    }
-    std::ifstream in(logFile, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    constexpr std::size_t kKeep = 64 * 1024;
-    result.output = text.size() > kKeep ? text.substr(text.size() - kKeep) : text;
-    return result;
+    std::vector<std::string> command = argv;
+    command.front() = onPath(argv.front());
+    return runSandboxed(run, command, logFile);
 }
 
 } // namespace t10::grade

@@ -1,7 +1,8 @@
-// Runs a program as a child process under limits (t10-grade runs its trusted tools with it, the
-// reference and FLIP; student code, a stage's or a TGA loader's, goes through sandbox.hpp): wall time (the whole
-// process group is killed when it runs out, so a hanging shader cannot stall the grader), CPU
-// time and address space (setrlimit), with stdout and stderr captured into one log file.
+// Runs a trusted program (t10-grade's reference renders, FLIP, make_test_images) as a child process
+// under limits: wall time (its whole process group is killed when it runs out), CPU time and address
+// space, with stdout and stderr captured into one log file. It goes through the one process runner,
+// runSandboxed (sandbox.hpp), with no isolation: the grader's own user, its environment extended by
+// the caller's. Student code, a stage's or a TGA loader's, runs through runSandboxed with isolation.
 #pragma once
 #include <string>
 #include <vector>
