@@ -53,7 +53,7 @@ help:
 	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
 	@echo "make check PART=1|2|3 [DIR=folder]  build your part, grade it, say what to fix first (exit 0 only at 100)"
 	@echo "make run STAGE=student_partN  run your part (window, or headless into $(OUT)/); any stage name works"
-	@echo "make distro-check DISTRO=bookworm|trixie [MODES=\"root user\"]  make run and make test in a fresh Debian root (mmdebstrap, $(BUILD)/distro-check/)"
+	@echo "make distro-check DISTRO=bookworm|trixie [MODES=\"root user\"] [TARGETS=\"run test\"]  make run and make test (or TARGETS) in a fresh Debian root (mmdebstrap, $(BUILD)/distro-check/)"
 	@echo "make windows-check  cross-build for Windows (MinGW-w64) and run the goldens, unit and GL tests under Wine ($(BUILD)/windows/)"
 	@echo "make help   this list"
 
@@ -311,14 +311,14 @@ gradescope: platform-part
 prairielearn: platform-part
 	python3 grader/platforms/package.py prairielearn $(PART) . $(OUT)/prairielearn/part$(PART)
 
-# `make distro-check DISTRO=bookworm|trixie [MODES="root user"]` (tools/distro_check/): `make run` and
-# `make test` from a clone of this checkout's HEAD in a fresh minimal Debian root (mmdebstrap, cached in
+# `make distro-check DISTRO=bookworm|trixie [MODES="root user"] [TARGETS="run test"]` (tools/distro_check/):
+# `make run` and `make test` (or the TARGETS given) from a clone of this checkout's HEAD in a fresh minimal Debian root (mmdebstrap, cached in
 # $(BUILD)/distro-check/), as root and as a user with sudo. Not part of `make test`; run it for trixie
 # before resolving an issue that touches CMake, packages or a third-party API.
 .PHONY: distro-check
 distro-check: PACKAGES := mmdebstrap
 distro-check: deps
-	tools/distro_check/distro_check.sh "$(DISTRO)" "$(or $(MODES),root user)" . $(BUILD)/distro-check
+	tools/distro_check/distro_check.sh "$(DISTRO)" "$(or $(MODES),root user)" . $(BUILD)/distro-check "$(or $(TARGETS),run test)"
 
 # Windows, proven here (tools/windows_check/): the project cross-compiled with Debian's MinGW-w64
 # (GLFW, Imath, OpenEXR, Catch2 built from Debian's source packages into $(BUILD)/windows-deps/, once),
