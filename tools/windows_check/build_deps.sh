@@ -52,16 +52,16 @@ build_one catch2 -DCATCH_BUILD_TESTING=OFF -DCATCH_INSTALL_DOCS=OFF -DCATCH_BUIL
 # Dear ImGui (extras/): Debian's source has no build system for the backends; ours is in imgui/.
 CMAKE_SOURCE=$here/imgui build_one imgui -DIMGUI_SOURCE_DIR="$(ls -d "$deps"/src/imgui-*/ | head -n 1)"
 
-# Header-only libraries from the Debian packages installed on this machine (make deps).
+# Header-only libraries from the Debian packages installed on this machine (make deps), copied with
+# their timestamps (-p): a fresh copy of unchanged headers must not make the next build recompile all.
 for dir in glm CLI nlohmann; do
     rm -rf "${prefix:?}/include/$dir"
-    cp -r "/usr/include/$dir" "$prefix/include/$dir"
+    cp -rp "/usr/include/$dir" "$prefix/include/$dir"
 done
-cp /usr/include/CLI11.hpp "$prefix/include/" 2>/dev/null || true
 for package in glm CLI11 nlohmann_json; do
     rm -rf "${prefix:?}/share/cmake/$package"
-    cp -r "/usr/share/cmake/$package" "$prefix/share/cmake/$package"
+    cp -rp "/usr/share/cmake/$package" "$prefix/share/cmake/$package"
 done
-cp /usr/include/stb/stb_image.h /usr/include/stb/stb_image_write.h "$prefix/include/"
-cp /usr/include/tiny_gltf.h "$prefix/include/"
+cp -p /usr/include/stb/stb_image.h /usr/include/stb/stb_image_write.h "$prefix/include/"
+cp -p /usr/include/tiny_gltf.h "$prefix/include/"
 echo "windows-deps: prefix ready in $prefix"

@@ -31,7 +31,7 @@ prefix=$(cd "$deps/prefix" && pwd)
 students=$build-students
 for part in 1 2; do
     mkdir -p "$students/part$part"
-    cp "$root"/tutorial10_part1_tonemap/* "$students/part$part/"
+    cp -p "$root"/tutorial10_part1_tonemap/* "$students/part$part/"  # -p: an unchanged copy rebuilds nothing
 done
 
 step "cross-compiling the project into $build"
