@@ -24,5 +24,16 @@ export APT_CONFIG=$apt_dir/apt.conf
 cd "$dest/src"
 for package in "$@"; do
     if ls -d "$package"-*/ >/dev/null 2>&1; then continue; fi
-    apt-get source -qq "$package" >/dev/null
+    if ! out=$(apt-get source -qq "$package" 2>&1 >/dev/null); then
+        echo "$out" | tail -n 5 >&2
+        # An archive that cannot be reached, or a mirror that does not carry the source files its own
+        # index lists (404), is the host's limit, not a broken Windows build: exit 77 so that
+        # windows_check.sh can say SKIPPED. Any other failure is ours.
+        if echo "$out" | grep -qE ' 404 |Could not resolve|Temporary failure|Connection (timed out|refused)|Unable to connect'; then
+            echo "fetch_sources: Debian's archive here does not give the source package $package" >&2
+            exit 77
+        fi
+        echo "fetch_sources: apt-get source $package failed" >&2
+        exit 1
+    fi
 done

@@ -7,7 +7,8 @@
 #   3. its Windows tests (tests/windows_tests.cmake) run by ctest under Wine in Xvfb: the four stages'
 #      golden comparisons through the WGL pbuffer backend (Wine hands WGL to the host's Mesa), the
 #      proof that each golden rejects an altered image, the Catch2 unit and GL tests.
-# Prints each result and the time of each step; exits non-zero when anything fails.
+# Prints each result and the time of each step; exits non-zero when anything fails. A host whose
+# Debian archive cannot give the libraries' source packages gets "SKIPPED: <reason>" and exit 0.
 # usage: windows_check.sh DEPS_DIR BUILD_DIR
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -23,7 +24,15 @@ for tool in x86_64-w64-mingw32-g++-posix wine wineserver xvfb-run; do
 done
 
 step "Windows libraries into $deps/prefix"
-"$here/build_deps.sh" "$deps"
+rc=0
+"$here/build_deps.sh" "$deps" || rc=$?
+if [ "$rc" -eq 77 ]; then
+    # fetch_sources.sh could not get a library's source from this host's archive: nothing was built,
+    # so nothing is proven either way; say so instead of passing or blaming the code.
+    echo "SKIPPED: make windows-check: this host's Debian archive does not give every source package the Windows prefix is built from"
+    exit 0
+fi
+[ "$rc" -eq 0 ] || exit "$rc"
 prefix=$(cd "$deps/prefix" && pwd)
 
 # Two students' folders, as a Windows student makes them (README, "Windows"): part1 holds Part 1's
