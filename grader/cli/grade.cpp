@@ -931,13 +931,13 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
                                                    config_.fill, shaders.string());
     report.files = copied.files;
     if (copied.empty) {
-        report.status = "empty";
+        report.status = Status::Empty;
         report.message = "the submission has no file of Part " + std::to_string(config_.part) +
                          " (see the file list: a name in the wrong case or a symlink is not taken)";
         return finish(report);
     }
     if (!copied.missing.empty()) {
-        report.status = "missing-files";
+        report.status = Status::MissingFiles;
         report.message = "missing:";
         for (const std::string& file : copied.missing) report.message += " " + file;
         report.message += " (this part asks for them; the instructor's --fill-from-reference " +
@@ -949,7 +949,7 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
     const std::string built = build((shaders / "Tutorial10.cpp").string(), job, work, log);
     std::ofstream(out / "build.log") << studentPaths(log);
     if (built.empty()) {
-        report.status = "build-failed";
+        report.status = Status::BuildFailed;
         report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40));
         return finish(report);
     }
@@ -1000,13 +1000,13 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
         if (!result.ok()) {
             const std::string& o = result.output;
             if (result.timedOut || result.signal == SIGXCPU) {
-                report.status = "timeout";
+                report.status = Status::Timeout;
             } else if (result.signal == 0 && (o.find("shader compilation failed") != std::string::npos ||
                                               o.find("program link failed") != std::string::npos ||
                                               o.find("shader not found") != std::string::npos)) {
-                report.status = "shader-error";
+                report.status = Status::ShaderError;
             } else {
-                report.status = "crashed";
+                report.status = Status::Crashed;
             }
             report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
                              (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
@@ -1018,7 +1018,7 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
         std::string fault = checkOutputs(dir);
         if (fault.empty()) fault = checkFrame((dir / "frame.png").string(), spec.width, spec.height);
         if (!fault.empty()) {
-            report.status = "crashed";
+            report.status = Status::Crashed;
             report.message = "case " + spec.id + " (" + spec.description + "): the program exited 0 but " +
                              (fault.rfind("it ", 0) == 0 ? fault.substr(3) : "its output is unusable: " + fault);
             return finish(report);
@@ -1027,13 +1027,13 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
         try {
             runs.back().dump = loadDumpDir(dir.string());
         } catch (const Error& error) {
-            report.status = "crashed";
+            report.status = Status::Crashed;
             report.message = "case " + spec.id + ": the program exited 0 but wrote no readable output: " + error.what();
             return finish(report);
         }
     }
 
-    report.status = "graded";
+    report.status = Status::Graded;
     const std::vector<CaseSpec> specs = cases(config_.part);
     for (std::size_t i = 0; i < runs.size(); ++i) {
         std::vector<Check> checks;
@@ -1091,7 +1091,7 @@ int main(int argc, char** argv) {
                 try {
                     reports[i] = grader.grade(config.submissions[i], config.names[i], job);
                     const std::lock_guard<std::mutex> lock(printing);
-                    std::cout << reports[i].submission << ": " << reports[i].status << ", score " << reports[i].score()
+                    std::cout << reports[i].submission << ": " << statusName(reports[i].status) << ", score " << reports[i].score()
                               << " (" << reports[i].passedCount() << "/" << reports[i].checks.size() << " checks) in "
                               << static_cast<int>(reports[i].seconds + 0.5) << " s\n";
                 } catch (const std::exception& error) {
@@ -1100,7 +1100,7 @@ int main(int argc, char** argv) {
                     reports[i].submission = config.names[i];
                     reports[i].path = config.submissions[i];
                     reports[i].part = config.part;
-                    reports[i].status = "grader-error";
+                    reports[i].status = Status::GraderError;
                     reports[i].isolation = isolationName(grader.isolation());
                     reports[i].fill = fillPolicyName(config.fill);
                     reports[i].message = std::string("the grader failed: ") + error.what();
@@ -1133,7 +1133,7 @@ int main(int argc, char** argv) {
             report.submission = config.names[i];
             report.path = config.submissions[i];
             report.part = config.part;
-            report.status = "grader-error";
+            report.status = Status::GraderError;
             report.message = std::string("the grader failed: ") + error.what();
             try {
                 writeFormats(report, config.formats, (fs::path(config.reportDir) / config.names[i]).string());

@@ -58,8 +58,8 @@ std::string stepsText(const std::vector<int>& steps) {
 // What the student reads first: the status, the score and every failed check with its diagnosis.
 std::string summary(const Report& report) {
     std::ostringstream out;
-    out << "Tutorial 10 Part " << report.part << ": " << report.status << ", score " << report.score() << "/100";
-    if (report.status == "graded") {
+    out << "Tutorial 10 Part " << report.part << ": " << statusName(report.status) << ", score " << report.score() << "/100";
+    if (report.status == Status::Graded) {
         out << " (" << report.passedCount() << " of " << report.checks.size() << " checks passed).\n";
         for (const Check& c : report.checks) {
             if (c.passed) continue;
@@ -83,7 +83,7 @@ std::string checkText(const Check& c) {
 }
 
 std::string stepOutput(const Report& report, const StepResult& step) {
-    if (step.checks.empty()) return "not graded: the submission's status is " + report.status + " (see the summary)";
+    if (step.checks.empty()) return "not graded: the submission's status is " + std::string(statusName(report.status)) + " (see the summary)";
     std::string out = step.note.empty() ? "" : step.note + "\n";
     // Failures first: they are what the student acts on.
     for (const Check* c : step.checks)
@@ -95,7 +95,7 @@ std::string stepOutput(const Report& report, const StepResult& step) {
 
 // Only what failed: the reporter prints the message of every failed test in the job's log.
 std::string failures(const Report& report, const StepResult& step) {
-    if (step.checks.empty()) return "not graded: the submission's status is " + report.status;
+    if (step.checks.empty()) return "not graded: the submission's status is " + std::string(statusName(report.status));
     std::string out;
     for (const Check* c : step.checks)
         if (!c->passed) out += c->id + ": " + c->diagnosis + "\n";
@@ -158,7 +158,7 @@ std::string gradescope(const Report& report) {
 }
 
 std::string prairieLearn(const Report& report, const std::string& dir) {
-    const bool gradable = report.status != "grader-error";
+    const bool gradable = report.status != Status::GraderError;
     std::ostringstream tests;
     const std::vector<StepResult> steps = stepResults(report);
     for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -168,7 +168,7 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
             ids += (ids.empty() ? "" : ", ") + c->id;
             if (!c->passed) message += (message.empty() ? "" : "\n") + c->id + ": " + c->diagnosis;
         }
-        if (s.checks.empty()) message = "not graded (" + report.status + ")";
+        if (s.checks.empty()) message = "not graded (" + std::string(statusName(report.status)) + ")";
         tests << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"description\": "
               << jsonQuote(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << s.points
               << ", \"max_points\": " << s.maxPoints << ", \"message\": "
@@ -224,7 +224,7 @@ std::string classroomDetail(const Report& report, const StepResult& step, bool f
     if (step.checks.empty()) {
         if (!first) return "";
         std::string message = report.message.substr(0, report.message.find("\n\n"));
-        return capped("not graded: " + report.status + (message.empty() ? "" : "\n" + message), kClassroomMessageCap);
+        return capped("not graded: " + std::string(statusName(report.status)) + (message.empty() ? "" : "\n" + message), kClassroomMessageCap);
     }
     // The first failed check that names a mistake (else the first failed one) in full; the others by id.
     std::string out;
@@ -245,7 +245,7 @@ std::string classroomDetail(const Report& report, const StepResult& step, bool f
 std::string classroom(const Report& report) {
     // status: pass only at full marks; error for the grader's own failure; fail otherwise (the
     // reporter fails its step on fail or error: grade.yml decides whether the job fails).
-    const std::string status = report.status == "grader-error" ? "error" : report.score() == 100 ? "pass" : "fail";
+    const std::string status = report.status == Status::GraderError ? "error" : report.score() == 100 ? "pass" : "fail";
     const std::vector<int> failed = report.failedSteps();
     const std::vector<StepResult> steps = stepResults(report);
     // The step to fix first: the earliest one a failed check blames (Report::fixFirst), else the first.
@@ -254,8 +254,8 @@ std::string classroom(const Report& report) {
     out << "{\"version\": 1, \"status\": \"" << status << "\", \"max_score\": 100, \"tests\": [";
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
-        const std::string testStatus = report.status == "grader-error" ? "error" : s.passed ? "pass" : "fail";
-        const bool fixFirst = !s.passed && s.step == fixStep && report.status != "grader-error";
+        const std::string testStatus = report.status == Status::GraderError ? "error" : s.passed ? "pass" : "fail";
+        const bool fixFirst = !s.passed && s.step == fixStep && report.status != Status::GraderError;
         // The reporter prints the name on the step's line: the points (whole numbers that add up to the
         // score) and which step to fix first are read there.
         const std::string name = stepName(report, s.step) + ": " + std::to_string(s.points) + "/" +
@@ -289,7 +289,7 @@ std::vector<StepResult> stepResults(const Report& report) {
             const bool blames = std::find(blamed.begin(), blamed.end(), step) != blamed.end();
             if (blames || (covers && c.passed)) s.checks.push_back(&c);
         }
-        s.passed = report.status == "graded" && !report.checks.empty() &&
+        s.passed = report.status == Status::Graded && !report.checks.empty() &&
                    std::find(failed.begin(), failed.end(), step) == failed.end();
         const auto at = whole.find(step);
         s.maxPoints = at == whole.end() ? 0 : at->second;

@@ -129,7 +129,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
     csv << "student_id,name,part,score,max_score,status,report\n";
     for (const Report* r : sorted) {
         csv << csvField(r->submission) << "," << csvField(nameOf(*r)) << "," << r->part << "," << r->score() << ",100,"
-            << r->status << "," << csvField(r->submission + "/report.html") << "\n";
+            << statusName(r->status) << "," << csvField(r->submission + "/report.html") << "\n";
     }
     writeFileAtomically(dir + "/grades-lms.csv", csv.str());
 
@@ -140,7 +140,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
     for (const Report* r : sorted) {
         ++bins[std::min(r->score() / 10, 10)];
         sum += r->score();
-        ++statuses[r->status];
+        ++statuses[statusName(r->status)];
     }
     const int most = std::max(1, *std::max_element(std::begin(bins), std::end(bins)));
     const std::vector<int> steps = partSteps(part);
@@ -173,10 +173,10 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
         const std::string name = nameOf(*r);
         out << "<tr><td class=\"l\"><a href=\"" << htmlEscape(r->submission) << "/report.html\">" << htmlEscape(r->submission)
             << "</a>" << (name.empty() ? "" : " (" + htmlEscape(name) + ")") << "</td><td>" << r->score() << "</td><td>"
-            << htmlEscape(r->status) << "</td>";
+            << htmlEscape(statusName(r->status)) << "</td>";
         for (int step : steps) {
             const auto it = byStep.find(step);
-            if (r->status != "graded") {
+            if (r->status != Status::Graded) {
                 out << "<td class=\"n\"></td>";
             } else if (it == byStep.end()) {
                 out << "<td class=\"o\"></td>";

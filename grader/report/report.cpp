@@ -109,7 +109,7 @@ std::vector<int> Report::failedSteps() const {
 }
 
 int Report::score() const {
-    if (status != "graded" || checks.empty()) return 0;
+    if (status != Status::Graded || checks.empty()) return 0;
     // The sum of the whole points (rubric.hpp) of the steps no failed check blames: the same points
     // every platform's step tests carry (formats.cpp's stepResults).
     const std::vector<int> failed = failedSteps();
@@ -150,7 +150,7 @@ std::string Report::fixFirst() const {
 namespace {
 
 std::string summary(const Report& report) {
-    if (report.status != "graded") return report.status + ": score 0";
+    if (report.status != Status::Graded) return std::string(statusName(report.status)) + ": score 0";
     const std::vector<int> failed = report.failedSteps();
     if (failed.empty()) return "score " + std::to_string(report.score()) + ": every check passed";
     std::string steps;
@@ -163,12 +163,12 @@ std::string summary(const Report& report) {
 void writeReportJson(const Report& report, const std::string& path) {
     std::ostringstream out;
     out << "{\n  \"submission\": " << jsonString(report.submission) << ",\n  \"path\": " << jsonString(report.path)
-        << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonString(report.status)
+        << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonString(statusName(report.status))
         << ",\n  \"score\": " << report.score() << ",\n  \"message\": " << jsonString(report.message)
         << ",\n  \"seconds\": " << report.seconds << ",\n  \"rubric\": " << jsonString(rubricPath())
         << ",\n  \"fix_first\": " << jsonString(report.fixFirst()) << ",\n  \"summary\": " << jsonString(summary(report))
         << ",\n  \"failed_steps\": [" << stepList(report.failedSteps()) << "],\n  \"steps\": [";
-    if (report.status == "graded") {
+    if (report.status == Status::Graded) {
         const std::vector<int> failed = report.failedSteps();
         bool first = true;
         for (const auto& [step, points] : report.rubric) {
@@ -240,7 +240,7 @@ void writeReportHtml(const Report& report, const std::string& path) {
         << "@media print{body{max-width:none;font-size:10pt}a{color:#000}.check{border-left-width:3px}"
         << "a[href^=http]::after{content:\" (\" attr(href) \")\"}}</style></head><body>\n"
         << "<h1>" << html(report.submission) << ": Tutorial 10 Part " << report.part << "</h1>\n";
-    out << "<div class=\"summary\"><p>Status: <b>" << html(report.status) << "</b>. Score: <b>" << report.score()
+    out << "<div class=\"summary\"><p>Status: <b>" << html(statusName(report.status)) << "</b>. Score: <b>" << report.score()
         << "</b> / 100.</p>\n";
     const std::vector<int> failed = report.failedSteps();
     if (!failed.empty()) {
@@ -248,7 +248,7 @@ void writeReportHtml(const Report& report, const std::string& path) {
         for (std::size_t i = 0; i < failed.size(); ++i)
             out << (i ? ", " : "") << "<a href=\"" << stepAnchor(failed[i]) << "\">step " << failed[i] << "</a>";
         out << ".</p>\n";
-    } else if (report.status == "graded") {
+    } else if (report.status == Status::Graded) {
         out << "<p>Every check passed.</p>\n";
     }
     out << "<p>The score is the share of the rubric's points (" << html(rubricPath()) << ") of the steps that no failed "
@@ -310,7 +310,7 @@ void writeGradebook(const std::vector<Report>& reports, const std::string& path)
         std::string failed;
         for (const Check& c : r.checks)
             if (!c.passed) failed += (failed.empty() ? "" : " ") + c.id;
-        out << csvField(r.submission) << "," << r.part << "," << r.status << "," << r.score() << ","
+        out << csvField(r.submission) << "," << r.part << "," << statusName(r.status) << "," << r.score() << ","
             << r.passedCount() << "," << r.checks.size() << "," << csvField(failed) << ","
             << csvField([&] {
                    std::string steps;

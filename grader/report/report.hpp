@@ -2,6 +2,7 @@
 // (gradebook.csv), and how the score is computed.
 #pragma once
 #include "checks/checks.hpp"
+#include "report/status.hpp"
 #include "scoring/rubric.hpp"
 #include "intake/submission_files.hpp"
 
@@ -14,7 +15,7 @@ struct Report {
     std::string submission;  // the folder's name
     std::string path;        // the folder as given
     int part = 0;
-    std::string status;      // graded | empty | missing-files | build-failed | shader-error | crashed | timeout
+    Status status = Status::GraderError; // set by the run (status.hpp)
     std::string message;     // for a status other than graded: what happened, with the tool's own words
     std::vector<Check> checks;
     double seconds = 0.0;    // wall time to grade it
