@@ -3,7 +3,9 @@
 // GitHub Classroom's autograding-grading-reporter (a step output holding base64 JSON, version 1).
 #include "platforms/formats.hpp"
 
+#include "report/output.hpp"
 #include "t10/error.hpp"
+#include "t10/json.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -142,14 +144,14 @@ std::string gradescope(const Report& report) {
     std::ostringstream out;
     // `score` is given, so Gradescope shows report.json's score; the tests' points add up to it.
     out << "{\n  \"score\": " << report.score() << ",\n  \"execution_time\": " << static_cast<long>(std::lround(report.seconds))
-        << ",\n  \"output\": " << jsonQuote(summary(report)) << ",\n  \"output_format\": \"text\""
+        << ",\n  \"output\": " << jsonQuoted(summary(report)) << ",\n  \"output_format\": \"text\""
         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
     const std::vector<StepResult> steps = stepResults(report);
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
-        out << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"number\": \""
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonQuoted(stepName(report, s.step)) << ", \"number\": \""
             << stepNumber(s.step) << "\", \"score\": " << s.points << ", \"max_score\": " << s.maxPoints
-            << ", \"status\": \"" << (s.passed ? "passed" : "failed") << "\", \"output\": " << jsonQuote(stepOutput(report, s))
+            << ", \"status\": \"" << (s.passed ? "passed" : "failed") << "\", \"output\": " << jsonQuoted(stepOutput(report, s))
             << ", \"output_format\": \"text\", \"visibility\": \"visible\", \"tags\": [\"part" << report.part << "\", \"step-"
             << stepNumber(s.step) << "\"]}";
     }
@@ -169,11 +171,11 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
             if (!c->passed) message += (message.empty() ? "" : "\n") + c->id + ": " + c->diagnosis;
         }
         if (s.checks.empty()) message = "not graded (" + std::string(statusName(report.status)) + ")";
-        tests << (i ? "," : "") << "\n    {\"name\": " << jsonQuote(stepName(report, s.step)) << ", \"description\": "
-              << jsonQuote(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << s.points
+        tests << (i ? "," : "") << "\n    {\"name\": " << jsonQuoted(stepName(report, s.step)) << ", \"description\": "
+              << jsonQuoted(ids.empty() ? "no checks ran" : "checks: " + ids) << ", \"points\": " << s.points
               << ", \"max_points\": " << s.maxPoints << ", \"message\": "
-              << jsonQuote(capped(message.empty() ? "passed" : message, kTestOutputCap)) << ", \"output\": "
-              << jsonQuote(stepOutput(report, s)) << "}";
+              << jsonQuoted(capped(message.empty() ? "passed" : message, kTestOutputCap)) << ", \"output\": "
+              << jsonQuoted(stepOutput(report, s)) << "}";
     }
     // Frames and heat-maps of failed image checks, once each (a FLIP check covers every step, so they
     // go in the top-level images, not in each test), as PNG data URIs while they fit.
@@ -199,15 +201,15 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
                 continue;
             }
             imageBytes += url.size() + label.size() + 32;
-            images += std::string(images.empty() ? "" : ",") + "\n    {\"label\": " + jsonQuote(label) + ", \"url\": \"" + url + "\"}";
+            images += std::string(images.empty() ? "" : ",") + "\n    {\"label\": " + jsonQuoted(label) + ", \"url\": \"" + url + "\"}";
         }
     }
     std::string output = summary(report);
     if (!omitted.empty()) output += "\nImages left out to keep the result under 1 MB: " + omitted + " (they are in report.html).";
     std::ostringstream out;
     out << "{\n  \"gradable\": " << (gradable ? "true" : "false") << ",\n  \"score\": " << number(report.score() / 100.0, 2);
-    if (!gradable) out << ",\n  \"format_errors\": [" << jsonQuote(capped(report.message, kMessageCap)) << "]";
-    out << ",\n  \"message\": " << jsonQuote(output.substr(0, output.find('\n'))) << ",\n  \"output\": " << jsonQuote(output)
+    if (!gradable) out << ",\n  \"format_errors\": [" << jsonQuoted(capped(report.message, kMessageCap)) << "]";
+    out << ",\n  \"message\": " << jsonQuoted(output.substr(0, output.find('\n'))) << ",\n  \"output\": " << jsonQuoted(output)
         << ",\n  \"images\": [" << images << (images.empty() ? "" : "\n  ") << "],\n  \"tests\": [" << tests.str()
         << "\n  ]\n}\n";
     std::string text = out.str();
@@ -261,9 +263,9 @@ std::string classroom(const Report& report) {
         const std::string name = stepName(report, s.step) + ": " + std::to_string(s.points) + "/" +
                                  std::to_string(s.maxPoints) + (s.maxPoints == 1 ? " point" : " points") +
                                  (fixFirst ? " - fix this first" : "");
-        out << (i ? ", " : "") << "{\"name\": " << jsonQuote(name) << ", \"status\": \"" << testStatus
-            << "\", \"score\": " << s.points << ", \"message\": " << jsonQuote(failures(report, s))
-            << ", \"test_code\": " << jsonQuote(classroomDetail(report, s, s.step == fixStep))
+        out << (i ? ", " : "") << "{\"name\": " << jsonQuoted(name) << ", \"status\": \"" << testStatus
+            << "\", \"score\": " << s.points << ", \"message\": " << jsonQuoted(failures(report, s))
+            << ", \"test_code\": " << jsonQuoted(classroomDetail(report, s, s.step == fixStep))
             << ", \"filename\": \"\", \"line_no\": 0, \"execution_time\": \"" << number(report.seconds, 1) << "s\"}";
     }
     out << "]}\n";
@@ -321,85 +323,20 @@ void writeFormats(const Report& report, const std::vector<std::string>& formats,
     if (error) throw Error(dir + ": cannot create: " + error.message());
     for (const std::string& format : formats) {
         if (format == "gradescope") {
-            writeFileAtomically(dir + "/gradescope-results.json", gradescope(report));
+            writeOutputFile(dir + "/gradescope-results.json", gradescope(report), "Gradescope results");
         } else if (format == "prairielearn") {
-            writeFileAtomically(dir + "/prairielearn-results.json", prairieLearn(report, dir));
+            writeOutputFile(dir + "/prairielearn-results.json", prairieLearn(report, dir), "PrairieLearn results");
         } else if (format == "classroom") {
             const std::string json = classroom(report);
-            writeFileAtomically(dir + "/classroom-result.json", json);
-            writeFileAtomically(dir + "/classroom-result.b64", base64(json) + "\n");
+            writeOutputFile(dir + "/classroom-result.json", json, "Classroom result");
+            writeOutputFile(dir + "/classroom-result.b64", base64(json) + "\n", "Classroom result");
         } else {
             throw Error("unknown result format " + format);
         }
     }
 }
 
-std::string jsonQuote(const std::string& text) {
-    std::string out = "\"";
-    for (std::size_t i = 0; i < text.size();) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        // The length of a well-formed UTF-8 sequence starting here, or 0.
-        std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
-        if (length > 1) {
-            if (i + length > text.size() || (length == 2 && c < 0xC2)) length = 0;
-            for (std::size_t k = 1; length && k < length; ++k)
-                if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) length = 0;
-        }
-        if (length == 0) {
-            out += "\\ufffd";
-            ++i;
-            continue;
-        }
-        if (length > 1) {
-            out.append(text, i, length);
-            i += length;
-            continue;
-        }
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        case '\r': out += "\\r"; break;
-        default:
-            if (c < 0x20 || c == 0x7F) {
-                char buffer[8];
-                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                out += buffer;
-            } else {
-                out += static_cast<char>(c);
-            }
-        }
-        ++i;
-    }
-    return out + "\"";
-}
 
-std::string htmlEscape(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
-void writeFileAtomically(const std::string& path, const std::string& content) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!out) throw Error(temporary + ": cannot create: " + std::strerror(errno));
-        out << content;
-        if (!out.flush()) throw Error(temporary + ": cannot write: " + std::strerror(errno));
-    }
-    std::error_code error;
-    fs::rename(temporary, path, error);
-    if (error) throw Error(path + ": cannot rename into place: " + error.message());
-}
 
 } // namespace t10::grade

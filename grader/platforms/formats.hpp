@@ -34,9 +34,4 @@ const std::vector<std::string>& formatNames();
 // temporary file renamed into place; throws t10::Error naming the file that could not be written.
 void writeFormats(const Report& report, const std::vector<std::string>& formats, const std::string& dir);
 
-// Helpers shared with class_index.cpp.
-std::string jsonQuote(const std::string& text);  // a JSON string; invalid UTF-8 bytes become U+FFFD
-std::string htmlEscape(const std::string& text);
-void writeFileAtomically(const std::string& path, const std::string& content);
-
 } // namespace t10::grade

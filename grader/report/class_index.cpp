@@ -3,7 +3,9 @@
 
 #include "platforms/formats.hpp"
 
+#include "report/output.hpp"
 #include "t10/error.hpp"
+#include "t10/json.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -60,12 +62,6 @@ std::string trim(const std::string& text) {
     return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-    std::string out = "\"";
-    for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
 
 } // namespace
 
@@ -131,7 +127,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
         csv << csvField(r->submission) << "," << csvField(nameOf(*r)) << "," << r->part << "," << r->score() << ",100,"
             << statusName(r->status) << "," << csvField(r->submission + "/report.html") << "\n";
     }
-    writeFileAtomically(dir + "/grades-lms.csv", csv.str());
+    writeOutputFile(dir + "/grades-lms.csv", csv.str(), "the LMS CSV");
 
     // Scores in bins of ten; 100 alone (only a submission passing every check gets it).
     int bins[11] = {};
@@ -195,7 +191,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
     out << "<tr><th>failed by</th><th></th><th></th>";
     for (int step : steps) out << "<th>" << failures[step] << "</th>";
     out << "</tr>\n</table>\n</body></html>\n";
-    writeFileAtomically(dir + "/index.html", out.str());
+    writeOutputFile(dir + "/index.html", out.str(), "the class index");
 }
 
 } // namespace t10::grade

@@ -2,7 +2,9 @@
 // renamed into place, so a report on disk is always complete.
 #include "report/report.hpp"
 
+#include "report/output.hpp"
 #include "t10/error.hpp"
+#include "t10/json.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -11,55 +13,18 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
 #include <sstream>
 
 namespace t10::grade {
 
+namespace fs = std::filesystem;
+
 namespace {
 
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (const unsigned char c : text) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        case '\r': out += "\\r"; break;
-        default:
-            if (c < 0x20) {
-                char buffer[8];
-                std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                out += buffer;
-            } else {
-                out += static_cast<char>(c);
-            }
-        }
-    }
-    return out + "\"";
-}
 
-std::string html(const std::string& text) {
-    std::string out;
-    for (const char c : text) {
-        switch (c) {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
 
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
 
 std::string jsonNumber(const std::vector<double>& values) {
     std::ostringstream out;
@@ -80,18 +45,6 @@ std::string stepList(const std::vector<int>& steps) {
     return out;
 }
 
-void writeAtomically(const std::string& path, const std::string& content) {
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary);
-        if (!out) throw Error(temporary + ": cannot create: " + std::strerror(errno));
-        out << content;
-        if (!out.flush()) throw Error(temporary + ": cannot write: " + std::strerror(errno));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) throw Error(path + ": cannot rename into place: " + error.message());
-}
 
 } // namespace
 
@@ -140,7 +93,62 @@ std::string stepAnchor(int step) {
     return std::string(url != nullptr && *url != '\0' ? url : "tutorial10.html") + "#step-" + std::to_string(step);
 }
 
+namespace {
+
+// `path` as the student knows it: without the submission folder's name in front.
+std::string inSubmission(const std::string& path, const std::string& submission) {
+    const std::string prefix = submission + "/";
+    return path.compare(0, prefix.size(), prefix) == 0 ? path.substr(prefix.size()) : path;
+}
+
+// The first error of a compiler's or a shader compiler's output, as "FILE:LINE: error: ...", FILE
+// relative to the submission; "" when the output names none. GCC writes "FILE:LINE:COL: error: ...";
+// Mesa writes "SOURCE:LINE(COL): error: ..." (or "preprocessor error") under the line of the
+// program's error that names the shader file.
+std::string firstError(const std::string& output, const std::string& submission) {
+    static const std::regex gcc(R"(^(\S+?):(\d+):(?:\d+:)? (?:fatal )?error: (.*)$)");
+    static const std::regex shaderFile(R"((\S+\.(?:frag|vert|geom|comp|tesc|tese|glsl)):)");
+    static const std::regex mesa(R"(^\s*\d+:(\d+)\(\d+\): ((?:preprocessor )?error: .*)$)");
+    std::string shader;
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);) {
+        std::smatch match;
+        if (std::regex_search(line, match, gcc)) return inSubmission(match[1], submission) + ":" + match[2].str() + ": error: " + match[3].str();
+        if (std::regex_search(line, match, mesa) && !shader.empty()) return shader + ":" + match[1].str() + ": " + match[2].str();
+        if (std::regex_search(line, match, shaderFile)) shader = inSubmission(match[1], submission);
+    }
+    return "";
+}
+
+// The submission folder's own name: reports are read by the student, who must not see where the
+// instructor keeps the class (a trailing slash is ignored).
+std::string folderName(const std::string& path) {
+    fs::path folder(path);
+    if (!folder.has_filename()) folder = folder.parent_path();
+    return folder.filename().string();
+}
+
+// The first line of `text` that says something.
+std::string firstLine(const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+        if (line.find_first_not_of(" \t") != std::string::npos) return line;
+    return "";
+}
+
+} // namespace
+
 std::string Report::fixFirst() const {
+    if (status == Status::GraderError) return "fix first: nothing in your files; the grader itself failed (ask the instructor)";
+    if (status != Status::Graded) {
+        const std::string error = firstError(message, submission);
+        if (!error.empty()) return "fix first: " + error;
+        std::string line = firstLine(message);
+        const std::string dangling = " Its last output:"; // the output follows on the next lines
+        if (line.size() > dangling.size() && line.compare(line.size() - dangling.size(), dangling.size(), dangling) == 0)
+            line.erase(line.size() - dangling.size());
+        return "fix first: " + line;
+    }
     const std::vector<int> steps = failedSteps();
     if (steps.empty()) return "";
     const Check* check = blamedBy(*this, steps.front());
@@ -150,7 +158,7 @@ std::string Report::fixFirst() const {
 namespace {
 
 std::string summary(const Report& report) {
-    if (report.status != Status::Graded) return std::string(statusName(report.status)) + ": score 0";
+    if (report.status != Status::Graded) return std::string(statusName(report.status)) + ": score 0; " + report.fixFirst();
     const std::vector<int> failed = report.failedSteps();
     if (failed.empty()) return "score " + std::to_string(report.score()) + ": every check passed";
     std::string steps;
@@ -162,11 +170,11 @@ std::string summary(const Report& report) {
 
 void writeReportJson(const Report& report, const std::string& path) {
     std::ostringstream out;
-    out << "{\n  \"submission\": " << jsonString(report.submission) << ",\n  \"path\": " << jsonString(report.path)
-        << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonString(statusName(report.status))
-        << ",\n  \"score\": " << report.score() << ",\n  \"message\": " << jsonString(report.message)
-        << ",\n  \"seconds\": " << report.seconds << ",\n  \"rubric\": " << jsonString(rubricPath())
-        << ",\n  \"fix_first\": " << jsonString(report.fixFirst()) << ",\n  \"summary\": " << jsonString(summary(report))
+    out << "{\n  \"submission\": " << jsonQuoted(report.submission) << ",\n  \"path\": " << jsonQuoted(folderName(report.path))
+        << ",\n  \"part\": " << report.part << ",\n  \"status\": " << jsonQuoted(statusName(report.status))
+        << ",\n  \"score\": " << report.score() << ",\n  \"message\": " << jsonQuoted(report.message)
+        << ",\n  \"seconds\": " << report.seconds << ",\n  \"rubric\": " << jsonQuoted(fs::path(rubricPath()).filename().string())
+        << ",\n  \"fix_first\": " << jsonQuoted(report.fixFirst()) << ",\n  \"summary\": " << jsonQuoted(summary(report))
         << ",\n  \"failed_steps\": [" << stepList(report.failedSteps()) << "],\n  \"steps\": [";
     if (report.status == Status::Graded) {
         const std::vector<int> failed = report.failedSteps();
@@ -176,53 +184,53 @@ void writeReportJson(const Report& report, const std::string& path) {
             std::string by;
             for (const Check& c : report.checks) {
                 const std::vector<int> steps = failedSteps(c);
-                if (std::find(steps.begin(), steps.end(), step) != steps.end()) by += (by.empty() ? "" : ", ") + jsonString(c.id);
+                if (std::find(steps.begin(), steps.end(), step) != steps.end()) by += (by.empty() ? "" : ", ") + jsonQuoted(c.id);
             }
             out << (first ? "" : ",") << "\n    {\"step\": " << step << ", \"points\": " << points << ", \"passed\": "
                 << (lost ? "false" : "true") << ", \"failed_checks\": [" << by << "], \"link\": "
-                << jsonString(stepAnchor(step)) << "}";
+                << jsonQuoted(stepAnchor(step)) << "}";
             first = false;
         }
     }
-    out << "\n  ],\n  \"isolation\": " << jsonString(report.isolation)
-        << ",\n  \"fill_from_reference\": " << jsonString(report.fill) << ",\n  \"files\": [";
+    out << "\n  ],\n  \"isolation\": " << jsonQuoted(report.isolation)
+        << ",\n  \"fill_from_reference\": " << jsonQuoted(report.fill) << ",\n  \"files\": [";
     for (std::size_t i = 0; i < report.files.size(); ++i) {
         const SubmissionFile& f = report.files[i];
-        out << (i ? "," : "") << "\n    {\"name\": " << jsonString(f.name) << ", \"source\": " << jsonString(f.source)
-            << ", \"reason\": " << jsonString(f.reason) << ", \"bytes\": " << f.bytes << "}";
+        out << (i ? "," : "") << "\n    {\"name\": " << jsonQuoted(f.name) << ", \"source\": " << jsonQuoted(f.source)
+            << ", \"reason\": " << jsonQuoted(f.reason) << ", \"bytes\": " << f.bytes << "}";
     }
     out << "\n  ],\n  \"checks\": [";
     for (std::size_t i = 0; i < report.checks.size(); ++i) {
         const Check& c = report.checks[i];
-        out << (i ? "," : "") << "\n    {\"id\": " << jsonString(c.id) << ", \"steps\": [" << stepList(c.steps)
-            << "], \"passed\": " << (c.passed ? "true" : "false") << ", \"measured\": " << jsonString(c.measured)
-            << ", \"tolerance\": " << jsonString(c.tolerance) << ", \"diagnosis\": " << jsonString(c.diagnosis)
+        out << (i ? "," : "") << "\n    {\"id\": " << jsonQuoted(c.id) << ", \"steps\": [" << stepList(c.steps)
+            << "], \"passed\": " << (c.passed ? "true" : "false") << ", \"measured\": " << jsonQuoted(c.measured)
+            << ", \"tolerance\": " << jsonQuoted(c.tolerance) << ", \"diagnosis\": " << jsonQuoted(c.diagnosis)
             << ", \"blames\": [" << stepList(failedSteps(c)) << "], \"mistakes\": [";
         for (std::size_t m = 0; m < c.mistakes.size(); ++m) {
             const Finding& f = c.mistakes[m];
-            out << (m ? ", " : "") << "{\"id\": " << jsonString(f.id) << ", \"steps\": [" << stepList(f.steps) << "]";
+            out << (m ? ", " : "") << "{\"id\": " << jsonQuoted(f.id) << ", \"steps\": [" << stepList(f.steps) << "]";
             if (!f.parameter.empty() && !f.value.empty()) {
-                out << ", \"estimate\": {\"parameter\": " << jsonString(f.parameter) << ", \"value\": " << jsonNumber(f.value)
+                out << ", \"estimate\": {\"parameter\": " << jsonQuoted(f.parameter) << ", \"value\": " << jsonNumber(f.value)
                     << ", \"tutorial\": " << jsonNumber(f.tutorial) << "}";
             }
             out << "}";
         }
         out << "]";
         if (!c.heatMap.empty()) {
-            out << ", \"images\": {\"student\": " << jsonString(c.studentImage) << ", \"reference\": "
-                << jsonString(c.referenceImage) << ", \"heat_map\": " << jsonString(c.heatMap) << "}";
+            out << ", \"images\": {\"student\": " << jsonQuoted(c.studentImage) << ", \"reference\": "
+                << jsonQuoted(c.referenceImage) << ", \"heat_map\": " << jsonQuoted(c.heatMap) << "}";
         }
         out << "}";
     }
     out << "\n  ]\n}\n";
-    writeAtomically(path, out.str());
+    writeOutputFile(path, out.str(), "report.json");
 }
 
 void writeReportHtml(const Report& report, const std::string& path) {
     std::ostringstream out;
     // One column that reflows down to 400 px; print keeps the colours' meaning in words and borders.
     out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" << html(report.submission)
+        << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"><title>" << htmlEscape(report.submission)
         << " - Tutorial 10 Part " << report.part << "</title>\n<style>"
         << "body{font-family:system-ui,sans-serif;line-height:1.4;margin:0 auto;padding:1em;max-width:60em;color:#111}"
         << "h1{font-size:1.4em}h2{font-size:1.15em;margin-top:1.5em}"
@@ -239,29 +247,29 @@ void writeReportHtml(const Report& report, const std::string& path) {
         << "@media (max-width:30em){dl{grid-template-columns:1fr}dt{margin-top:.3em}}"
         << "@media print{body{max-width:none;font-size:10pt}a{color:#000}.check{border-left-width:3px}"
         << "a[href^=http]::after{content:\" (\" attr(href) \")\"}}</style></head><body>\n"
-        << "<h1>" << html(report.submission) << ": Tutorial 10 Part " << report.part << "</h1>\n";
-    out << "<div class=\"summary\"><p>Status: <b>" << html(statusName(report.status)) << "</b>. Score: <b>" << report.score()
+        << "<h1>" << htmlEscape(report.submission) << ": Tutorial 10 Part " << report.part << "</h1>\n";
+    out << "<div class=\"summary\"><p>Status: <b>" << htmlEscape(statusName(report.status)) << "</b>. Score: <b>" << report.score()
         << "</b> / 100.</p>\n";
     const std::vector<int> failed = report.failedSteps();
     if (!failed.empty()) {
-        out << "<p class=\"fix\">" << html(report.fixFirst()) << "</p>\n<p>Steps that lose points: ";
+        out << "<p class=\"fix\">" << htmlEscape(report.fixFirst()) << "</p>\n<p>Steps that lose points: ";
         for (std::size_t i = 0; i < failed.size(); ++i)
             out << (i ? ", " : "") << "<a href=\"" << stepAnchor(failed[i]) << "\">step " << failed[i] << "</a>";
         out << ".</p>\n";
     } else if (report.status == Status::Graded) {
         out << "<p>Every check passed.</p>\n";
     }
-    out << "<p>The score is the share of the rubric's points (" << html(rubricPath()) << ") of the steps that no failed "
+    out << "<p>The score is the share of the rubric's points (" << htmlEscape(fs::path(rubricPath()).filename().string()) << ") of the steps that no failed "
         << "check blames; a step loses its points once, however many checks see it. " << report.passedCount() << " of "
         << report.checks.size() << " checks passed.</p></div>\n";
-    if (!report.message.empty()) out << "<pre>" << html(report.message) << "</pre>\n";
-    out << "<p>Isolation: " << html(report.isolation) << (report.isolation == "none" ? " (run with --no-sandbox: unsafe)" : "")
-        << ". Missing files taken from the reference: " << html(report.fill) << ".</p>\n";
+    if (!report.message.empty()) out << "<pre>" << htmlEscape(report.message) << "</pre>\n";
+    out << "<p>Isolation: " << htmlEscape(report.isolation) << (report.isolation == "none" ? " (run with --no-sandbox: unsafe)" : "")
+        << ". Missing files taken from the reference: " << htmlEscape(report.fill) << ".</p>\n";
     if (!report.files.empty()) {
         out << "<table><tr><th>file</th><th>graded from</th><th>why</th></tr>\n";
         for (const SubmissionFile& f : report.files) {
             out << "<tr" << (f.source == "ignored" || f.source == "missing" ? " class=\"fail\"" : "") << "><td>"
-                << html(f.name) << "</td><td>" << html(f.source) << "</td><td>" << html(f.reason) << "</td></tr>\n";
+                << htmlEscape(f.name) << "</td><td>" << htmlEscape(f.source) << "</td><td>" << htmlEscape(f.reason) << "</td></tr>\n";
         }
         out << "</table>\n";
     }
@@ -273,13 +281,13 @@ void writeReportHtml(const Report& report, const std::string& path) {
             if (!heading) out << "<h2>" << (pass == 0 ? "Failed checks" : "Passed checks") << "</h2>\n";
             heading = true;
             out << "<div class=\"check " << (c.passed ? "pass" : "fail") << "\"><p><span class=\"label\">"
-                << (c.passed ? "passed" : "FAILED") << "</span> " << html(c.id) << " (";
+                << (c.passed ? "passed" : "FAILED") << "</span> " << htmlEscape(c.id) << " (";
             for (std::size_t i = 0; i < c.steps.size(); ++i)
                 out << (i ? ", " : "") << "<a href=\"" << stepAnchor(c.steps[i]) << "\">" << c.steps[i] << "</a>";
-            out << ")</p>\n<dl><dt>measured</dt><dd>" << html(c.measured) << "</dd><dt>tolerance</dt><dd>"
-                << html(c.tolerance) << "</dd>";
+            out << ")</p>\n<dl><dt>measured</dt><dd>" << htmlEscape(c.measured) << "</dd><dt>tolerance</dt><dd>"
+                << htmlEscape(c.tolerance) << "</dd>";
             if (!c.passed) {
-                out << "<dt>diagnosis</dt><dd>" << html(c.diagnosis) << "</dd>";
+                out << "<dt>diagnosis</dt><dd>" << htmlEscape(c.diagnosis) << "</dd>";
                 const std::vector<int> blamed = failedSteps(c);
                 out << "<dt>costs</dt><dd>";
                 if (blamed.empty()) out << "nothing of its own (it follows from an earlier check)";
@@ -289,18 +297,18 @@ void writeReportHtml(const Report& report, const std::string& path) {
             }
             out << "</dl>\n";
             if (!c.heatMap.empty()) {
-                out << "<div class=\"images\"><figure><img src=\"" << html(c.studentImage)
+                out << "<div class=\"images\"><figure><img src=\"" << htmlEscape(c.studentImage)
                     << "\" alt=\"the submission's frame\"><figcaption>the submission</figcaption></figure><figure><img src=\""
-                    << html(c.referenceImage) << "\" alt=\"the expected frame\"><figcaption>expected</figcaption></figure>"
-                    << "<figure><img src=\"" << html(c.heatMap) << "\" alt=\"difference heat-map\"><figcaption>difference "
+                    << htmlEscape(c.referenceImage) << "\" alt=\"the expected frame\"><figcaption>expected</figcaption></figure>"
+                    << "<figure><img src=\"" << htmlEscape(c.heatMap) << "\" alt=\"difference heat-map\"><figcaption>difference "
                     << "heat-map</figcaption></figure></div>\n";
             }
             out << "</div>\n";
         }
     }
-    out << "<p>Step links point at " << html(stepAnchor(1).substr(0, stepAnchor(1).find('#')))
+    out << "<p>Step links point at " << htmlEscape(stepAnchor(1).substr(0, stepAnchor(1).find('#')))
         << " (T10_GRADE_TUTORIAL_URL sets the course site's page).</p>\n</body></html>\n";
-    writeAtomically(path, out.str());
+    writeOutputFile(path, out.str(), "report.html");
 }
 
 void writeGradebook(const std::vector<Report>& reports, const std::string& path) {
@@ -319,7 +327,7 @@ void writeGradebook(const std::vector<Report>& reports, const std::string& path)
                }())
             << "," << r.isolation << "," << r.fill << "\n";
     }
-    writeAtomically(path, out.str());
+    writeOutputFile(path, out.str(), "the gradebook");
 }
 
 } // namespace t10::grade

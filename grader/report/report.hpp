@@ -30,7 +30,9 @@ struct Report {
     int passedCount() const;
     // The steps the failed checks blame, each once, in tutorial order.
     std::vector<int> failedSteps() const;
-    // "fix first: step 9 - <the diagnosis of the first check that blames it>", or "" when all passed.
+    // "fix first: step 9 - <the diagnosis of the first check that blames it>", or "" when all passed;
+    // for a status other than graded, the first compiler or shader error as "fix first: FILE:LINE:
+    // error: ..." (FILE relative to the submission), else the first line of the message.
     std::string fixFirst() const;
 };
 

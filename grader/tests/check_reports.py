@@ -13,6 +13,7 @@ score lower than Part 1 with one wrong constant. Every id named must be in mista
 finding of a parameter must carry its estimate. Exit 0 when all hold, 1 otherwise."""
 import csv
 import json
+import re
 import os
 import sys
 
@@ -61,6 +62,7 @@ EXPECTED = {
     "p1_one_constant": ("graded", [("pot.frame", "white-point", 9)]),
     "no_compile": ("build-failed", []),
     "shader_error": ("shader-error", []),
+    "shader_bytes": ("shader-error", []),
     "crash": ("crashed", []),
     "loop": ("timeout", []),
 }
@@ -77,7 +79,16 @@ FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-thr
 # What the message of a submission that was not graded must say (the tool's own words).
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
+            "shader_bytes": ["shader_bytes/PostProcess.frag", "shader compilation failed", "caf\ufffd"],
             "crash": ["signal 11"], "loop": ["timed out after 20 s"]}
+# What fix_first must say for a submission that was not graded: the first compiler or shader error
+# with its file (relative to the submission) and line, else the first line of what happened.
+FIX_FIRST = {"no_compile": r"^fix first: Tutorial10\.cpp:\d+: error: expected",
+             "shader_error": r"^fix first: PostProcess\.frag:\d+: error: syntax error",
+             "shader_bytes": r"^fix first: PostProcess\.frag:\d+: (preprocessor )?error: .*caf\ufffd",
+             "crash": r"^fix first: case \w+ .*signal 11", "loop": r"^fix first: \S"}
+# Host folders a student-facing report must not name: the source tree and the tests' output tree.
+SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # Per-pass checks (the capture of each blur pass): what their measurement or diagnosis must say.
 PASS_WORDS = {"swapped_subroutines": [("pot.blur-passes", "first failing pass: pass 1 vertical")],
               "tap": [("pot.blur-passes", "first failing pass: pass 1 horizontal")],
@@ -155,6 +166,14 @@ def check_report(report_dir, name, errors):
     status, failures = EXPECTED[name]
     def fail(text):
         errors.append(f"{name}: {text}")
+    for output in ("report.json", "report.html"):
+        if not os.path.exists(os.path.join(report_dir, name, output)):
+            continue
+        with open(os.path.join(report_dir, name, output), encoding="utf-8", errors="replace") as f:
+            text = f.read()
+        for host in (SOURCE_ROOT + "/", os.path.dirname(os.path.dirname(os.path.abspath(report_dir))) + "/"):
+            if host in text:
+                fail(f"{output} shows the host folder {host}")
     if report["status"] != status:
         fail(f"status {report['status']}, expected {status} ({report['message'][:300]})")
         return
@@ -163,6 +182,8 @@ def check_report(report_dir, name, errors):
     if status != "graded":
         if report["score"] != 0:
             fail(f"score {report['score']} for status {status}")
+        if not re.search(FIX_FIRST[name], report.get("fix_first", "")):
+            fail(f"fix_first {report.get('fix_first')!r} does not match {FIX_FIRST[name]!r}")
         for words in MESSAGES[name]:
             if words not in report["message"]:
                 fail(f"message does not say '{words}': {report['message'][:400]}")

@@ -51,6 +51,8 @@ MISTAKES = {
     # Statuses other than graded.
     "no_compile": (HOST, [("bool GL_Init(t10::App& app)\n{", "bool GL_Init(t10::App& app)\n{\n    int iMissingSemicolon = 1\n")]),
     "shader_error": ("PostProcess.frag", [("float fYNew", "flot fYNew")]),
+    # An #error line holding bytes that are not UTF-8 (Latin-1 'é', 0xff 0xfe): report.json stays valid.
+    "shader_bytes": ("PostProcess.frag", [("float fYNew", "#error caf\udce9 \udcff\udcfe\n    float fYNew")]),
     "crash": (HOST, [("bool GL_Init(t10::App& app)\n{", "bool GL_Init(t10::App& app)\n{\n    volatile int* piNull = nullptr;\n    *piNull = 42;\n")]),
     # A host loop: Mesa's llvmpipe caps shader loops (65535 iterations), so a looping shader ends.
     "loop": (HOST, [("void GL_Render(t10::App& app)\n{", "void GL_Render(t10::App& app)\n{\n    volatile bool bWait = true;\n    while (bWait) {}\n")]),
@@ -168,7 +170,7 @@ def main():
             text = text.replace(old, new)
         folder = os.path.join(out, "part3", name)
         os.makedirs(folder)
-        with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
+        with open(os.path.join(folder, file), "w", encoding="utf-8", errors="surrogateescape") as f:
             f.write(text)
     batches = [(3, name, entry[3], entry[4]) for name, entry in FITTED.items()]
     batches += [(3, name, file, changes) for name, (file, changes) in OUTSIDE.items()]

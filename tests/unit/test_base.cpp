@@ -52,3 +52,21 @@ TEST_CASE("the JSON writer escapes strings and writes the file whole", "[base]")
     CHECK_THROWS_WITH(t10::writeJsonFile(dir + "/missing/report.json", report),
                       Catch::Contains("missing/report.json: cannot write JSON"));
 }
+
+TEST_CASE("jsonQuoted gives valid JSON and UTF-8 for any bytes", "[base]") {
+    // A compiler's line as a student's shader can make it: a bare 0xff, a cut-off sequence, a UTF-16
+    // surrogate in UTF-8 form, a carriage return, a NUL and an escape character.
+    const std::string bytes = std::string("#error \xff caf\xc3 \xed\xa0\x80 ok \xc3\xa9\r") + std::string(1, '\0') + "\x1b[0m\"q";
+    const std::string quoted = t10::jsonQuoted(bytes);
+    CHECK(quoted.front() == '"');
+    CHECK(quoted.back() == '"');
+    // Parsing checks the UTF-8 as well as the syntax.
+    std::string parsed;
+    REQUIRE_NOTHROW(parsed = nlohmann::json::parse(quoted).get<std::string>());
+    CHECK(parsed.find("\xef\xbf\xbd") != std::string::npos);  // U+FFFD in place of the bad bytes
+    CHECK(parsed.find("ok \xc3\xa9\r") != std::string::npos); // valid UTF-8 and \r kept as they were
+    CHECK(quoted.find("\\r") != std::string::npos);
+    CHECK(quoted.find("\\u0000") != std::string::npos);
+    CHECK(quoted.find("\\u001b") != std::string::npos);
+    CHECK(t10::jsonQuoted("plain") == "\"plain\"");
+}

@@ -4,8 +4,14 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace t10 {
+
+// `text` as one JSON string literal, quotes included, for writers that lay out their own JSON: the
+// same escaping as jsonText (control characters escaped, invalid UTF-8 bytes replaced by U+FFFD),
+// so the result is valid JSON and valid UTF-8 whatever bytes `text` holds.
+std::string jsonQuoted(std::string_view text);
 
 // `value` as text: two-space indentation, a final newline, non-ASCII kept as UTF-8 (invalid UTF-8
 // in a string is replaced by U+FFFD rather than failing the report).
