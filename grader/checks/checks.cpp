@@ -92,6 +92,12 @@ std::string estimateText(const Mistake& m, const std::vector<double>& value) {
            (plural ? "are " : "is ") + listed(m.tutorialText);
 }
 
+std::vector<int> range(int first, int last) {
+    std::vector<int> steps(static_cast<std::size_t>(last - first + 1));
+    std::iota(steps.begin(), steps.end(), first);
+    return steps;
+}
+
 std::string stepRange(const std::vector<int>& steps) {
     if (steps.size() == 1) return "step " + std::to_string(steps[0]);
     const bool contiguous = steps.back() - steps.front() + 1 == int(steps.size());
@@ -284,6 +290,74 @@ struct FrameModel {
     int keyLevel = -1;              // >= 0: the key read per pixel from this luminance level
 };
 
+// A catalogue mistake that is one tutorial constant set to another value: its id, the constant,
+// the range a fit searches (log-spaced) and the steps it costs; named from `firstPart` on.
+struct ModelParameter {
+    const char* id;
+    double ref::Settings::*field;
+    double low, high;
+    std::vector<int> steps;
+    int firstPart;
+};
+
+// The frame's one-constant mistakes: the frame check fits each to one case, crossCheckCases to
+// every case whose frame failed at once.
+const ModelParameter kFrameParameters[] = {{"white-point", &ref::Settings::whitePoint, 0.02, 20.0, {9}, 1},
+                                               {"middle-grey", &ref::Settings::middleGrey, 0.3, 3.0, {9}, 1},
+                                               {"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, {9}, 1},
+                                               {"bloom-weight", &ref::Settings::bloomWeight, 0.01, 10.0, {20}, 2}};
+
+FrameModel withSetting(double ref::Settings::*field, double value) {
+    FrameModel model;
+    model.settings.*field = value;
+    return model;
+}
+
+// The frame's mistakes without a constant to fit: each a model of the final pass taken as it is.
+struct DiscreteModel {
+    const char* id;
+    std::vector<int> steps;
+    FrameModel model;
+    std::vector<double> value;
+};
+
+std::vector<DiscreteModel> frameDiscreteModels(int part, int luminanceLevels) {
+    std::vector<DiscreteModel> models;
+    FrameModel m;
+    m.toneMap = false;
+    models.push_back({"tone-map-missing", range(6, 10), m, {}});
+    for (Unmap unmap : {Unmap::None, Unmap::Log2ThenExp, Unmap::LnThenExp2}) {
+        m = FrameModel{};
+        m.unmap = unmap;
+        models.push_back({unmap == Unmap::None ? "missing-unmapping" : "log2-exp-mismatch", {9}, m, {}});
+    }
+    m = FrameModel{};
+    m.settings.lumaWeights = kRec601Weights;
+    models.push_back({"luminance-weights", {9}, m, {kRec601Weights[0], kRec601Weights[1], kRec601Weights[2]}});
+    for (int l = 0; l + 1 < luminanceLevels; ++l) {
+        m = FrameModel{};
+        m.keyLevel = l;
+        models.push_back({"key-level", {8}, m, {double(l)}});
+    }
+    if (part >= 2) {
+        m = FrameModel{};
+        m.useBloom = false;
+        models.push_back({"bloom-missing", {19, 20}, m, {}});
+        m = FrameModel{};
+        m.bloomAfter = true;
+        models.push_back({"bloom-after-tonemap", {20}, m, {}});
+    }
+    if (part >= 3) {
+        m = FrameModel{};
+        m.region = Region::LowerLeftQuarter;
+        models.push_back({"viewport-reset", {35}, m, {}});
+        m = FrameModel{};
+        m.halfInvResolution = true;
+        models.push_back({"ubo-reset", {35}, m, {}});
+    }
+    return models;
+}
+
 struct FrameInputs {
     FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel, const std::vector<ImageF>* lumLevels)
         : accumulation(acc), mappedKey(key), bloom(bloomLevel), levels(lumLevels) {
@@ -461,12 +535,6 @@ bool allZero(const ImageF& image) {
     return std::all_of(image.data.begin(), image.data.end(), [](float v) { return v == 0.0f; });
 }
 
-std::vector<int> range(int first, int last) {
-    std::vector<int> steps(static_cast<std::size_t>(last - first + 1));
-    std::iota(steps.begin(), steps.end(), first);
-    return steps;
-}
-
 // GL_R11F_G11F_B10F keeps 6 mantissa bits for red and green and 5 for blue: one unit in the last
 // place is 2^-6 or 2^-5 of the value, whether the driver rounds or truncates.
 constexpr double kRelativeStep[3] = {1.0 / 64.0, 1.0 / 64.0, 1.0 / 32.0};
@@ -532,6 +600,12 @@ ImageF modelPass(const ImageF& source, int w, int h, bool horizontal, const ref:
     return out;
 }
 
+// The blur's one-constant mistakes, fitted to a pass (fitPass) and made to agree across the cases
+// (crossCheckCases).
+const ModelParameter kBlurParameters[] = {{"blur-sigma", &ref::Settings::sigma, 0.2, 12.0, {27}, 3},
+                                              {"blur-tap-inner", &ref::Settings::tapInner, 0.02, 3.0, {27}, 3},
+                                              {"blur-tap-outer", &ref::Settings::tapOuter, 0.05, 5.0, {27}, 3}};
+
 // A blur mistake that explains a pass: the catalogue id, the fitted value and the settings.
 struct BlurFinding {
     std::string id;
@@ -547,15 +621,7 @@ std::vector<BlurFinding> fitPass(const ImageF& source, const ImageF& gpu, int w,
                                  ref::FloatStore store) {
     std::vector<BlurFinding> found;
     const auto error = [&](const ref::Settings& s, bool axis) { return peakError(gpu, modelPass(source, w, h, axis, s, store)); };
-    struct Parameter {
-        const char* id;
-        double ref::Settings::*field;
-        double low, high;
-    };
-    const Parameter parameters[] = {{"blur-sigma", &ref::Settings::sigma, 0.2, 12.0},
-                                    {"blur-tap-inner", &ref::Settings::tapInner, 0.02, 3.0},
-                                    {"blur-tap-outer", &ref::Settings::tapOuter, 0.05, 5.0}};
-    for (const Parameter& p : parameters) {
+    for (const ModelParameter& p : kBlurParameters) {
         const Fit fit = fitParameter(
             [&](double v) {
                 ref::Settings s;
@@ -636,161 +702,184 @@ struct CaseFrame {
     std::unique_ptr<FrameInputs> inputs;
 };
 
-} // namespace
+// The checks of every case of one submission, looked up by kind ("frame" finds pot.frame, ...).
+class AllCases {
+public:
+    AllCases(const std::vector<CaseRun>& runs, std::vector<Check>& checks) : runs_(runs), checks_(checks) {}
 
-void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Check>& checks) {
-    const auto runOf = [&](const Check& c) -> const CaseRun* {
-        for (const CaseRun& run : runs)
+    const CaseRun* runOf(const Check& c) const {
+        for (const CaseRun& run : runs_)
             if (c.id.rfind(run.id + ".", 0) == 0) return &run;
         return nullptr;
-    };
-    const auto failedOf = [&](const std::string& kind) {
+    }
+    // The failed checks of `kind` that fail on their own (not following from an earlier one).
+    std::vector<Check*> failed(const std::string& kind) const {
         std::vector<Check*> list;
-        for (Check& c : checks)
+        for (Check& c : checks_)
             if (!c.passed && !c.followsFrom && endsWith(c.id, "." + kind) && runOf(c) != nullptr) list.push_back(&c);
         return list;
-    };
-    const auto has = [](const Check& c, const std::string& id) {
-        return std::any_of(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; });
-    };
-    const auto drop = [](Check& c, const std::string& id) {
-        c.mistakes.erase(std::remove_if(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; }),
-                         c.mistakes.end());
-    };
-
-    // The bloom threshold: the interval every case allows.
-    const std::vector<Check*> thresholds = failedOf("bloom-threshold");
-    if (std::any_of(thresholds.begin(), thresholds.end(), [&](const Check* c) { return has(*c, "bloom-threshold"); })) {
-        const ref::Rgb rec709{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
-        ThresholdInterval joint;
-        bool readable = true;
-        for (const Check* c : thresholds) {
-            const CaseRun* run = runOf(*c);
-            if (run->dump.levelCount(kBloomUnit) < 1) {
-                readable = false; // a case without a bloom texture allows no threshold at all
-                continue;
-            }
-            const ThresholdInterval i = thresholdInterval(run->dump.accumulation, run->dump.bloom(0), rec709);
-            joint.low = std::max(joint.low, i.low);
-            joint.high = std::min(joint.high, i.high);
-        }
-        const bool consistent = readable && joint.low > 0.0 && joint.low < joint.high && joint.high < 1e300;
-        for (Check* c : thresholds) {
-            if (!has(*c, "bloom-threshold")) continue;
-            drop(*c, "bloom-threshold");
-            c->unexplained = "bloom level 0 is the first buffer that goes wrong: no one luminance threshold separates the "
-                             "pixels that bloom from those that do not in every input (step 18)";
-            rebuildDiagnosis(*c);
-            if (c->mistakes.empty()) c->blame = {18};
-            if (consistent) {
-                c->diagnosis.clear();
-                name(*c, "bloom-threshold", {18}, {std::sqrt(joint.low * joint.high) / ref::kYwhite},
-                     "between " + format(joint.low / ref::kYwhite, 3) + " and " + format(joint.high / ref::kYwhite, 3) +
-                         " x Yw over every input");
-                rebuildDiagnosis(*c);
-            }
-        }
     }
 
-    // The frame's constants: one value fitted to every case whose frame failed for a constant.
+private:
+    const std::vector<CaseRun>& runs_;
+    std::vector<Check>& checks_;
+};
+
+bool names(const Check& c, const std::string& id) {
+    return std::any_of(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; });
+}
+
+void drop(Check& c, const std::string& id) {
+    c.mistakes.erase(std::remove_if(c.mistakes.begin(), c.mistakes.end(), [&](const Finding& f) { return f.id == id; }),
+                     c.mistakes.end());
+}
+
+// The bloom threshold: named only when one luminance interval separates the pixels in every case.
+void reconcileThreshold(const AllCases& cases) {
+    const std::vector<Check*> thresholds = cases.failed("bloom-threshold");
+    if (std::none_of(thresholds.begin(), thresholds.end(), [&](const Check* c) { return names(*c, "bloom-threshold"); })) return;
+    const ref::Rgb rec709{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
+    ThresholdInterval joint;
+    bool readable = true;
+    for (const Check* c : thresholds) {
+        const CaseRun* run = cases.runOf(*c);
+        if (run->dump.levelCount(kBloomUnit) < 1) {
+            readable = false; // a case without a bloom texture allows no threshold at all
+            continue;
+        }
+        const ThresholdInterval i = thresholdInterval(run->dump.accumulation, run->dump.bloom(0), rec709);
+        joint.low = std::max(joint.low, i.low);
+        joint.high = std::min(joint.high, i.high);
+    }
+    const bool consistent = readable && joint.low > 0.0 && joint.low < joint.high && joint.high < 1e300;
+    for (Check* c : thresholds) {
+        if (!names(*c, "bloom-threshold")) continue;
+        drop(*c, "bloom-threshold");
+        c->unexplained = "bloom level 0 is the first buffer that goes wrong: no one luminance threshold separates the "
+                         "pixels that bloom from those that do not in every input (step 18)";
+        rebuildDiagnosis(*c);
+        if (c->mistakes.empty()) c->blame = {18};
+        if (consistent) {
+            c->diagnosis.clear();
+            name(*c, "bloom-threshold", {18}, {std::sqrt(joint.low * joint.high) / ref::kYwhite},
+                 "between " + format(joint.low / ref::kYwhite, 3) + " and " + format(joint.high / ref::kYwhite, 3) +
+                     " x Yw over every input");
+            rebuildDiagnosis(*c);
+        }
+    }
+}
+
+// One frame constant fitted to every case at once; the cases' own fits of it are replaced by that
+// value when it explains every case within the frame's tolerance, and dropped when it does not.
+void fitFrameConstantJointly(const ModelParameter& p, const std::vector<Check*>& frames,
+                             const std::vector<std::unique_ptr<CaseFrame>>& cases) {
+    std::vector<double> values;
+    std::vector<int> steps;
+    for (const Check* c : frames)
+        for (const Finding& f : c->mistakes)
+            if (f.id == p.id) {
+                values.push_back(f.value[0]);
+                steps = f.steps;
+            }
+    const auto model = [&p](double v) { return withSetting(p.field, v); };
+    const Fit rough = fitParameter(
+        [&](double v) {
+            double sum = 0.0;
+            for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame);
+            return sum;
+        },
+        *std::min_element(values.begin(), values.end()) * 0.5, *std::max_element(values.begin(), values.end()) * 2.0, true, 12);
+    const Fit fit = refineFrameFit(rough.value, [&](double v) {
+        double sum = 0.0;
+        for (const auto& c : cases) {
+            const auto e = t10::test::byteError(modelFrame(*c->inputs, model(v)), c->run.dump.frame);
+            sum += e.mean + e.fractionOverOne;
+        }
+        return sum;
+    });
+    bool everyCase = true;
+    for (const auto& c : cases)
+        everyCase = everyCase && frameWithin(t10::test::byteError(modelFrame(*c->inputs, model(fit.value)), c->run.dump.frame));
+    for (Check* c : frames) {
+        drop(*c, p.id);
+        rebuildDiagnosis(*c);
+        if (everyCase) {
+            c->diagnosis.clear();
+            name(*c, p.id, steps, {fit.value});
+            rebuildDiagnosis(*c);
+        }
+    }
+}
+
+// The frame's constants: a constant the student wrote is the same in every render.
+void reconcileFrameConstants(int part, const AllCases& all) {
     std::vector<Check*> frames;
     std::vector<std::unique_ptr<CaseFrame>> cases;
     std::set<std::string> named;
-    for (Check* c : failedOf("frame")) {
+    for (Check* c : all.failed("frame")) {
         // A frame check exists only where the case's buffers were read (bufferChecks got that far).
-        if (part >= 2 && runOf(*c)->dump.levelCount(kBloomUnit) < 2) continue;
+        if (part >= 2 && all.runOf(*c)->dump.levelCount(kBloomUnit) < 2) continue;
         const bool discreteOnly = !c->mistakes.empty() && std::none_of(c->mistakes.begin(), c->mistakes.end(),
                                                                           [](const Finding& f) { return f.value.size() == 1; });
         if (discreteOnly) continue;
         frames.push_back(c);
-        cases.push_back(std::make_unique<CaseFrame>(part, *runOf(*c)));
+        cases.push_back(std::make_unique<CaseFrame>(part, *all.runOf(*c)));
         for (const Finding& f : c->mistakes)
             if (f.value.size() == 1 && f.id != "key-level") named.insert(f.id);
     }
-    const std::pair<const char*, double ref::Settings::*> parameters[] = {{"white-point", &ref::Settings::whitePoint},
-                                                                          {"middle-grey", &ref::Settings::middleGrey},
-                                                                          {"epsilon", &ref::Settings::epsilon},
-                                                                          {"bloom-weight", &ref::Settings::bloomWeight}};
-    for (const auto& [id, field] : parameters) {
-        if (named.count(id) == 0 || frames.size() < 2) continue;
-        std::vector<double> values;
-        std::vector<int> steps;
-        for (const Check* c : frames)
-            for (const Finding& f : c->mistakes)
-                if (f.id == id) {
-                    values.push_back(f.value[0]);
-                    steps = f.steps;
-                }
-        const auto model = [field = field](double v) {
-            FrameModel m;
-            m.settings.*field = v;
-            return m;
-        };
-        const Fit rough = fitParameter(
-            [&](double v) {
-                double sum = 0.0;
-                for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame);
-                return sum;
-            },
-            *std::min_element(values.begin(), values.end()) * 0.5, *std::max_element(values.begin(), values.end()) * 2.0,
-            true, 12);
-        const Fit fit = refineFrameFit(rough.value, [&](double v) {
-            double sum = 0.0;
-            for (const auto& c : cases) {
-                const auto e = t10::test::byteError(modelFrame(*c->inputs, model(v)), c->run.dump.frame);
-                sum += e.mean + e.fractionOverOne;
-            }
-            return sum;
-        });
-        bool everyCase = true;
-        for (const auto& c : cases)
-            everyCase = everyCase && frameWithin(t10::test::byteError(modelFrame(*c->inputs, model(fit.value)), c->run.dump.frame));
-        for (Check* c : frames) {
-            drop(*c, id);
-            rebuildDiagnosis(*c);
-            if (everyCase) {
-                c->diagnosis.clear();
-                name(*c, id, steps, {fit.value});
-                rebuildDiagnosis(*c);
-            }
-        }
-    }
+    if (frames.size() < 2) return;
+    for (const ModelParameter& p : kFrameParameters)
+        if (named.count(p.id) != 0) fitFrameConstantJointly(p, frames, cases);
+}
 
-    // The blur's constants: a case that does not pin a constant down takes the value of the cases
-    // that do (their median).
+// The blur's constants: a case that does not pin a constant down takes the value of the cases that
+// do (their median).
+void reconcileBlurConstants(const AllCases& all) {
     for (const char* kind : {"blur-passes", "blur"}) {
-        const std::vector<Check*> list = failedOf(kind);
-        for (const char* id : {"blur-sigma", "blur-tap-inner", "blur-tap-outer"}) {
+        const std::vector<Check*> list = all.failed(kind);
+        for (const ModelParameter& p : kBlurParameters) {
             std::vector<double> pinned;
             for (const Check* c : list)
                 for (const Finding& f : c->mistakes)
-                    if (f.id == id && !f.loose && f.value.size() == 1) pinned.push_back(f.value[0]);
+                    if (f.id == p.id && !f.loose && f.value.size() == 1) pinned.push_back(f.value[0]);
             if (pinned.empty()) continue;
             std::sort(pinned.begin(), pinned.end());
             const double median = pinned[pinned.size() / 2];
             for (Check* c : list)
                 for (Finding& f : c->mistakes)
-                    if (f.id == id && f.loose) {
+                    if (f.id == p.id && f.loose) {
                         f.value = {median};
                         f.loose = false;
-                        f.text = findingText(id, f.steps, f.value, "measured in the other inputs; this one does not pin it down");
+                        f.text = findingText(p.id, f.steps, f.value, "measured in the other inputs; this one does not pin it down");
                         rebuildDiagnosis(*c);
                     }
         }
     }
+}
 
-    // Elsewhere: of several mistakes that explain one case, those every other case's check names too.
+// Of several mistakes that explain one case, those every other case's same check names too.
+void keepSharedFindings(const AllCases& all) {
     for (const char* kind : {"log-luminance", "blur-passes", "blur", "frame"}) {
         std::vector<Check*> list;
-        for (Check* c : failedOf(kind))
+        for (Check* c : all.failed(kind))
             if (!c->mistakes.empty()) list.push_back(c);
         for (Check* c : list) {
             if (c->mistakes.size() < 2) continue;
             keepFindings(*c, [&](const Finding& f) {
-                return std::all_of(list.begin(), list.end(), [&](const Check* o) { return has(*o, f.id); });
+                return std::all_of(list.begin(), list.end(), [&](const Check* o) { return names(*o, f.id); });
             });
         }
     }
+}
+
+} // namespace
+
+void crossCheckCases(int part, const std::vector<CaseRun>& runs, std::vector<Check>& checks) {
+    const AllCases all(runs, checks);
+    reconcileThreshold(all);
+    reconcileFrameConstants(part, all);
+    reconcileBlurConstants(all);
+    keepSharedFindings(all);
 }
 
 std::vector<int> partSteps(int part) { return range(1, part == 1 ? 16 : part == 2 ? 25 : 36); }
@@ -815,447 +904,465 @@ t10::test::Dump loadDumpDir(const std::string& dir) {
     return dump;
 }
 
+namespace {
+
+// --- One case's checks, as a table. ---------------------------------------------------------------
+
+// One case's checks in the making: the buffers they read and what the earlier checks found.
+struct CaseState {
+    CaseState(int partNumber, const CaseRun& caseRun, const CheckWriter& checkWriter)
+        : part(partNumber), dump(caseRun.dump), acc(caseRun.dump.accumulation), writer(checkWriter) {}
+    int part;
+    const t10::test::Dump& dump;
+    const ImageF& acc;
+    const CheckWriter& writer;
+    std::vector<Check> checks;              // the checks made so far, in the table's order
+    std::optional<ref::Rgb> studentWeights; // log-luminance: the weights that explain level 0
+    double gpuKey = 0.0;                    // the mapped key the final pass reads
+    ImageF bloom0, bloom1;                  // Part 2 on: the bloom texture's two levels
+    // Part 3: the captured blur passes and what the first failing one measured.
+    std::vector<CapturedPass> passes;
+    bool captured = false;
+    ref::FloatStore store{};
+    std::vector<BlurFinding> passFindings;
+    int pairs = ref::kBlurPasses;
+};
+
+// A check of the table: `what` names it within the case ("pot.key"); `followsFrom` lists the
+// earlier checks whose failure it may inherit (the only ones its function reads, through
+// earlier()); `run` fills in the check and returns false when the checks after it cannot run.
+struct CheckSpec {
+    const char* what;
+    int firstPart;
+    int lastPart;
+    std::vector<int> (*steps)(int part);
+    std::vector<const char*> followsFrom;
+    bool (*run)(CaseState& state, const CheckSpec& spec, Check& check);
+};
+
+// The check `what` made earlier for this case; `spec` must list it in followsFrom.
+Check& earlier(CaseState& state, const CheckSpec& spec, const std::string& what) {
+    const bool declared = std::any_of(spec.followsFrom.begin(), spec.followsFrom.end(), [&](const char* w) { return what == w; });
+    for (Check& check : state.checks)
+        if (declared && endsWith(check.id, "." + what)) return check;
+    throw Error(std::string("grader bug: check ") + spec.what + " reads " + what + ", which it does not follow from or which did not run");
+}
+
+// The check inherits the failure of `from`: it costs nothing of its own.
+void inherit(Check& check, const Check& from, const std::string& why) {
+    check.followsFrom = true;
+    check.diagnosis = "follows from " + from.id + (why.empty() ? " (see its diagnosis)" : ": " + why);
+}
+
+// Luminance mip chain (step 13): floor(log2(max)) + 1 levels reach the 1x1 key.
+bool luminanceLevelsCheck(CaseState& state, const CheckSpec&, Check& check) {
+    const int side = std::max(state.acc.width, state.acc.height);
+    const int expected = int(std::floor(std::log2(side))) + 1;
+    const int levels = state.dump.luminanceLevels();
+    check.passed = levels == expected;
+    check.measured = std::to_string(levels) + " levels on unit 16 at " + std::to_string(state.acc.width) + "x" +
+                     std::to_string(state.acc.height);
+    check.tolerance = "exactly floor(log2(" + std::to_string(side) + ")) + 1 = " + std::to_string(expected) +
+                      ": fewer levels never reach the 1x1 average, more cannot be allocated";
+    if (!check.passed) {
+        if (levels == int(std::ceil(std::log2(side)))) name(check, "ceil-log2-levels", {13});
+        else check.diagnosis = levels == 0 ? "no luminance texture on unit 16 (steps 12-13)"
+                                           : "the luminance texture does not have the full mip chain (step 13)";
+    }
+    return true;
+}
+
+// The luminance level 0 tolerance, in R16 steps. The GPU's float log differs from the double one by
+// about 1e-7 of the mapped range, far below one R16 step (1.5e-5), so a texel rounds at most to the
+// neighbouring step. At sizes that are not a power of two gl_FragCoord x 1 / size lands a hair off
+// the texel centre, and beside a lamp 1e-6 of its light moves a dark texel's log: 2 steps measured
+// at 160x90. A wrong weight, base or bound moves texels by hundreds of steps.
+constexpr double kLogLuminanceSteps = 4.0;
+
+// The models of luminance level 0 that explain it within the tolerance, named on the check.
+void nameLogLuminanceMistakes(CaseState& state, const ImageF& level0, Check& check) {
+    const ImageF& acc = state.acc;
+    if (const std::optional<ref::Rgb> w = fitWeights(level0, acc)) {
+        KeyModel model;
+        model.settings.lumaWeights = *w;
+        if (worstLuminanceSteps(level0, acc, model) <= kLogLuminanceSteps) {
+            state.studentWeights = *w;
+            name(check, "luminance-weights", {3}, {(*w)[0], (*w)[1], (*w)[2]});
+        }
+    }
+    const ModelParameter parameters[] = {{"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, {4}, 1},
+                                         {"white-point", &ref::Settings::whitePoint, 0.02, 20.0, {5}, 1}};
+    for (const ModelParameter& p : parameters) {
+        const auto model = [&](double v) {
+            KeyModel m;
+            m.settings.*(p.field) = v;
+            return m;
+        };
+        const Fit fit = fitParameter([&](double v) { return worstLuminanceSteps(level0, acc, model(v)); }, p.low, p.high, true);
+        if (fit.error <= kLogLuminanceSteps) name(check, p.id, p.steps, {fit.value});
+    }
+    KeyModel log2Pass;
+    log2Pass.log2Pass = true;
+    if (worstLuminanceSteps(level0, acc, log2Pass) <= kLogLuminanceSteps) name(check, "log2-exp-mismatch", {4});
+}
+
+// Luminance level 0 (steps 3-5): every pixel's range-mapped log luminance.
+bool logLuminanceCheck(CaseState& state, const CheckSpec&, Check& check) {
+    const ImageF& acc = state.acc;
+    const ImageF level0 = state.dump.level(kLuminanceUnit, 0);
+    const double worst = worstLuminanceSteps(level0, acc, KeyModel{});
+    check.passed = worst <= kLogLuminanceSteps;
+    check.measured = "largest difference " + format(worst) + " R16 steps (1/65535 of the mapped range) over " +
+                     std::to_string(acc.width) + "x" + std::to_string(acc.height) + " pixels";
+    check.tolerance = "<= 4 R16 steps: float vs double rounding, and off-centre sampling beside bright "
+                      "pixels (2 measured); a wrong weight or base is hundreds of steps off";
+    if (check.passed) return true;
+    nameLogLuminanceMistakes(state, level0, check);
+    if (check.mistakes.empty()) {
+        std::vector<double> expected, got;
+        for (int y = 0; y < acc.height && level0.width == acc.width; ++y)
+            for (int x = 0; x < acc.width; ++x) {
+                expected.push_back(modelMapped(texel(acc, x, y), KeyModel{}));
+                got.push_back(level0.at(x, y, 0));
+            }
+        const std::string shape = errorShape(expected, got, 1.0 / 65535.0, "R16 steps");
+        check.diagnosis = "luminance level 0 is the first buffer that goes wrong, and no catalogue mistake "
+                          "explains it" + (shape.empty() ? std::string() : ": " + shape) +
+                          "; check the luminance, log and range mapping of PostProcessInit.frag (steps 3-5)";
+    }
+    return true;
+}
+
+// The scene key (steps 3-5, 15): the smallest level against the CPU log-average.
+bool keyCheck(CaseState& state, const CheckSpec& spec, Check& check) {
+    const ImageF& acc = state.acc;
+    state.gpuKey = gpuMappedKey(state.dump);
+    const double cpu = ref::meanMappedLogLuminance(acc, true);
+    const int roundings = std::max(0, state.dump.luminanceLevels() - 1);
+    const bool exactChain = (acc.width & (acc.width - 1)) == 0 && (acc.height & (acc.height - 1)) == 0;
+    // Power-of-two sizes: every 2x2 average is exact and each level rounds to R16 once, half a step
+    // per level. Other sizes: glGenerateMipmap's filter is implementation-defined for odd levels, so
+    // 2% of the mapped range (0.34 in log luminance); a wrong formula is far beyond either.
+    const double bound = exactChain ? (0.5 * roundings + 0.01) / 65535.0 : 0.02;
+    check.passed = std::abs(state.gpuKey - cpu) <= bound;
+    check.measured = "mapped key " + format(state.gpuKey, 6) + ", CPU " + format(cpu, 6) + " (difference " +
+                     format(std::abs(state.gpuKey - cpu) * 65535.0) + " R16 steps)";
+    check.tolerance = exactChain ? "<= " + format(bound * 65535.0) + " R16 steps: half a step of rounding per mip level"
+                                 : "<= 1311 R16 steps (0.02 of the mapped range): glGenerateMipmap filters odd sizes as "
+                                   "the driver likes";
+    if (check.passed) return true;
+    const Check& level0 = earlier(state, spec, "log-luminance");
+    const Check& levels = earlier(state, spec, "luminance-levels");
+    if (!level0.passed) {
+        inherit(check, level0, "the key averages luminance level 0");
+    } else if (!levels.passed) {
+        inherit(check, levels, "the smallest level written is not the 1x1 average");
+    } else {
+        check.diagnosis = "level 0 is right but its average through the mip chain is not: check "
+                          "glGenerateMipmap on the luminance texture (step 15)";
+        check.blame = {15};
+    }
+    return true;
+}
+
+// What a bloom level 0 with pixels on the wrong side of the threshold means.
+void diagnoseThreshold(CaseState& state, const CheckSpec& spec, const ref::Rgb& rec709, Check& check) {
+    if (state.studentWeights && misclassified(state.acc, state.bloom0, ref::kBloomThreshold, *state.studentWeights) == 0) {
+        inherit(check, earlier(state, spec, "log-luminance"), "the threshold tests the luminance of step 3, whose weights are wrong");
+        return;
+    }
+    const ThresholdInterval interval = thresholdInterval(state.acc, state.bloom0, rec709);
+    if (interval.low < interval.high && interval.high < 1e300 && interval.low > 0.0) {
+        const double factor = std::sqrt(interval.low * interval.high) / ref::kYwhite;
+        name(check, "bloom-threshold", {18}, {factor},
+             "between " + format(interval.low / ref::kYwhite, 3) + " and " + format(interval.high / ref::kYwhite, 3) +
+                 " x Yw: the input has no luminance in between");
+    } else {
+        check.diagnosis = "bloom level 0 is the first buffer that goes wrong: no luminance threshold separates the "
+                          "pixels that bloom from those that do not (step 18)";
+    }
+}
+
+// Bloom level 0 (steps 17-18): exactly the pixels at or above 2.95 x Yw, with their colour. Without
+// a two-level bloom texture nothing after it can be checked.
+bool bloomThresholdCheck(CaseState& state, const CheckSpec& spec, Check& check) {
+    const ImageF& acc = state.acc;
+    if (state.dump.levelCount(kBloomUnit) < 2) {
+        check.measured = std::to_string(state.dump.levelCount(kBloomUnit)) + " levels on unit 17";
+        check.tolerance = "the bloom texture has 2 levels (step 22)";
+        check.diagnosis = "no two-level bloom texture on unit 17 (steps 21-23)";
+        check.blame = range(17, 25);
+        return false;
+    }
+    state.bloom0 = state.dump.bloom(0);
+    state.bloom1 = state.dump.bloom(1);
+    const ImageF cpu = ref::bloomThreshold(acc);
+    const ref::Rgb rec709{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
+    const int wrong = misclassified(acc, state.bloom0, ref::kBloomThreshold, rec709);
+    const double worst = wrong == 0 ? worstStoreError(state.bloom0, cpu, &cpu) : 0.0;
+    check.passed = wrong == 0 && worst <= 1.0;
+    check.measured = std::to_string(wrong) + " pixels on the wrong side of the threshold; worst colour error " +
+                     format(worst) + " R11G11B10F steps";
+    check.tolerance = "0 misclassified (pixels within 1e-6 of the threshold excepted: float vs double), colour "
+                      "within 1 step of GL_R11F_G11F_B10F (6/5 mantissa bits)";
+    if (check.passed) return true;
+    if (allZero(state.bloom0) && !allZero(cpu)) {
+        check.diagnosis = "step 18 not implemented: bloom level 0 is black, nothing was written to location 1";
+        check.blame = {17, 18};
+    } else if (wrong == 0) {
+        check.diagnosis = "the right pixels bloom but with the wrong colour (" + format(worst) +
+                          " R11G11B10F steps off): write the accumulation colour to location 1 (step 18)";
+        check.blame = {18};
+    } else {
+        diagnoseThreshold(state, spec, rec709, check);
+    }
+    return true;
+}
+
+// Bloom level 1 in Part 2 (steps 22, 24): the 2x2 average glGenerateMipmap writes (exact for even sizes).
+bool bloomDownsampleCheck(CaseState& state, const CheckSpec&, Check& check) {
+    const ImageF cpu = ref::boxDownsample(state.bloom0);
+    const bool even = state.acc.width % 2 == 0 && state.acc.height % 2 == 0;
+    const double worst = state.bloom1.width == cpu.width && state.bloom1.height == cpu.height ? worstStoreError(state.bloom1, cpu) : 1e9;
+    check.passed = worst <= (even ? 1.0 : 64.0);
+    check.measured = "worst error " + format(worst) + " R11G11B10F steps against the 2x2 average of level 0";
+    check.tolerance = even ? "<= 1 step: each texel averages exactly four level-0 texels and is stored once"
+                           : "<= 64 steps: odd sizes are filtered as the driver likes";
+    if (!check.passed) {
+        if (allZero(state.bloom1) && !allZero(state.bloom0)) name(check, "bloom-level1-missing", {24});
+        else check.diagnosis = "bloom level 1 is the first buffer that goes wrong, and it is not the 2x2 average "
+                               "of level 0: check glGenerateMipmap on unit 17 (step 24)";
+    }
+    return true;
+}
+
+// The first failing blur pass: what it measured, and the sigma, tap or axis models that explain it.
+void diagnosePass(CaseState& state, std::size_t k, const ImageF& source, const ImageF& expected, Check& check) {
+    const bool horizontal = k % 2 == 0;
+    const int w = std::max(1, state.bloom0.width / 2);
+    const int h = std::max(1, state.bloom0.height / 2);
+    state.passFindings = fitPass(source, state.passes[k].image, w, h, horizontal, state.store);
+    // Named now; the whole blur after it keeps those its chain confirms.
+    for (const BlurFinding& f : state.passFindings) {
+        const std::vector<int> steps = f.id == "swapped-subroutines" ? std::vector<int>{horizontal ? 32 : 33} : std::vector<int>{27};
+        name(check, f.id, steps, f.value, sigmaNote(f), f.loose);
+    }
+    if (!state.passFindings.empty()) return;
+    std::vector<double> e, g;
+    for (std::size_t i = 0; i < expected.data.size() && i < state.passes[k].image.data.size(); ++i) {
+        e.push_back(expected.data[i]);
+        g.push_back(state.passes[k].image.data[i]);
+    }
+    const std::string shape = errorShape(e, g, 1e-3, "");
+    check.diagnosis = passName(k) + " is the first that goes wrong, and no sigma, tap or axis explains it" +
+                      (shape.empty() ? std::string() : ": " + shape) +
+                      "; check Gauss.frag's offsets and weights, and the texture this pass reads (steps 27, 32-34)";
+    check.blame = {27};
+}
+
+// Every blur pass (steps 27, 32-34): each captured pass against one CPU Gaussian pass of the texture
+// the GPU wrote one pass earlier (bloom level 0 for the first), so the first pass that goes wrong is
+// named, whatever the passes after it do.
+bool blurPassesCheck(CaseState& state, const CheckSpec&, Check& check) {
+    state.captured = loadPasses(state.dump.dir, state.passes);
+    state.store = ref::detectFloatStore(state.bloom0, ref::bloomThreshold(state.acc));
+    if (state.captured && state.passes.size() % 2 == 0) state.pairs = int(state.passes.size()) / 2;
+    const int w = std::max(1, state.bloom0.width / 2);
+    const int h = std::max(1, state.bloom0.height / 2);
+    check.tolerance = "each pass: worst <= 2/32 of the peak (two R11G11B10F blue steps), mean <= 1e-4 of the "
+                      "peak, against one CPU pass of the GPU's previous pass";
+    check.passed = state.captured && !state.passes.empty();
+    if (!state.captured) {
+        check.measured = "no pass was captured (the grader's capture did not run)";
+        check.diagnosis = "the program did not run the frame loop's pass capture (--capture-passes)";
+    } else if (state.passes.empty()) {
+        check.measured = "the blur program drew no pass into a texture";
+        check.diagnosis = "no blur pass: check the blur framebuffers and draws (steps 30, 32-34)";
+    }
+    std::string worstText;
+    double worstMean = -1.0;
+    for (std::size_t k = 0; k < state.passes.size() && check.passed; ++k) {
+        const ImageF& source = k == 0 ? state.bloom0 : state.passes[k - 1].image;
+        const ImageF expected = modelPass(source, w, h, k % 2 == 0, ref::Settings{}, state.store);
+        const PeakError error = peakError(state.passes[k].image, expected);
+        const std::string figures = passName(k) + " (subroutine " + state.passes[k].subroutine + "): worst " +
+                                    format(error.worst) + " of the peak, mean " + format(error.mean) + " of the peak";
+        if (blurWithin(error)) {
+            if (error.mean > worstMean) {
+                worstMean = error.mean;
+                worstText = figures;
+            }
+            continue;
+        }
+        check.passed = false;
+        check.measured = "first failing pass: " + figures +
+                         (k == 0 ? "" : k == 1 ? " (the pass before it is within tolerance)"
+                                               : " (the " + std::to_string(k) + " passes before it are within tolerance)");
+        diagnosePass(state, k, source, expected, check);
+    }
+    if (check.passed) check.measured = std::to_string(state.passes.size()) + " passes within tolerance; the farthest: " + worstText;
+    return true;
+}
+
+// The number of passes (step 34): five pairs, counted from the captured draws.
+bool blurPassCountCheck(CaseState& state, const CheckSpec& spec, Check& check) {
+    const std::size_t drawn = state.passes.size();
+    const int expectedPasses = 2 * ref::kBlurPasses;
+    check.passed = state.captured && int(drawn) == expectedPasses;
+    check.measured = std::to_string(drawn) + " blur passes drawn into textures";
+    check.tolerance = "exactly " + std::to_string(expectedPasses) + " (" + std::to_string(ref::kBlurPasses) +
+                      " horizontal + vertical pairs): the count is exact";
+    if (check.passed) return true;
+    if (state.captured && drawn == 0) name(check, "blur-missing", range(27, 34));
+    else if (state.captured && drawn % 2 == 0) name(check, "blur-passes", {34}, {double(state.pairs)});
+    else if (state.captured) check.diagnosis = std::to_string(drawn) + " passes, not whole horizontal + vertical pairs (step 34)";
+    else check.diagnosis = earlier(state, spec, "blur-passes").diagnosis;
+    return true;
+}
+
+// What a bloom level 1 that is not the blur of level 0 means, given what the passes measured.
+void diagnoseBlur(CaseState& state, const CheckSpec& spec, Check& check) {
+    Check& passCheck = earlier(state, spec, "blur-passes");
+    // The chain with what the passes measured: the counted pairs and each fitted constant.
+    const auto chain = [&](const ref::Settings& s, int n) { return peakError(state.bloom1, ref::gaussianBloom(state.bloom0, n, state.store, s)); };
+    bool named = false;
+    for (const BlurFinding& f : state.passFindings) {
+        if (f.otherAxis) continue;
+        if (blurWithin(chain(f.settings, state.pairs))) {
+            name(check, f.id, {27}, f.value, sigmaNote(f), f.loose);
+            named = true;
+        }
+    }
+    // A constant that explains the first pass but not the chain of passes is not the student's.
+    if (named) {
+        keepFindings(passCheck, [&](const Finding& f) { return names(check, f.id); });
+        return;
+    }
+    const bool swapped = std::any_of(state.passFindings.begin(), state.passFindings.end(), [](const BlurFinding& f) { return f.otherAxis; });
+    if (swapped) {
+        inherit(check, passCheck, "");
+    } else if (state.pairs != ref::kBlurPasses && blurWithin(chain(ref::Settings{}, state.pairs))) {
+        name(check, "blur-passes", {34}, {double(state.pairs)});
+    } else if (blurWithin(peakError(state.bloom1, ref::boxDownsample(state.bloom0)))) {
+        name(check, "blur-missing", range(27, 34));
+    } else if (!passCheck.passed) {
+        inherit(check, passCheck, "");
+    } else {
+        check.diagnosis = "every captured pass is right but level 1 is not their result: check which texture the "
+                          "last pass draws into (steps 32-34)";
+        check.blame = {32, 33, 34};
+    }
+}
+
+// Bloom level 1 after the blur (steps 27-34): the CPU passes from the GPU's level 0.
+bool blurCheck(CaseState& state, const CheckSpec& spec, Check& check) {
+    const ImageF cpu = ref::gaussianBloom(state.bloom0, ref::kBlurPasses, state.store);
+    const PeakError error = peakError(state.bloom1, cpu);
+    check.passed = blurWithin(error);
+    check.measured = "worst " + format(error.worst) + " of the peak, mean " + format(error.mean) + " of the peak";
+    check.tolerance = "worst <= 2/32 of the peak (two R11G11B10F blue steps), mean <= 1e-4 of the peak";
+    if (check.passed) return true;
+    if (allZero(state.bloom1)) name(check, "bloom-level1-missing", {24});
+    else diagnoseBlur(state, spec, check);
+    return true;
+}
+
+// Whether every pixel off by more than a step is black in the input (the tone map's 0 / 0), and
+// there is at least one.
+bool onlyBlackPixelsOff(const ImageF& acc, const Image8& expected, const Image8& frame) {
+    bool anyBlack = false;
+    for (int y = 0; y < acc.height; ++y)
+        for (int x = 0; x < acc.width; ++x) {
+            int worst = 0;
+            for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int(expected.at(x, y, k)) - int(frame.at(x, y, k))));
+            if (worst <= 1) continue;
+            const ref::Rgb c = texel(acc, x, y);
+            if (c[0] != 0.0 || c[1] != 0.0 || c[2] != 0.0) return false;
+            anyBlack = true;
+        }
+    return anyBlack;
+}
+
+// The frame's models (frameDiscreteModels, kFrameParameters) that explain it, named on the check.
+void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
+    std::vector<ImageF> levels;
+    for (int l = 0; l < state.dump.luminanceLevels(); ++l) levels.push_back(state.dump.level(kLuminanceUnit, l));
+    const FrameInputs withLevels{state.acc, state.gpuKey, bloom, &levels};
+    const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(modelFrame(withLevels, m), state.dump.frame); };
+    for (const DiscreteModel& d : frameDiscreteModels(state.part, int(levels.size())))
+        if (!names(check, d.id) && frameWithin(frameError(d.model))) name(check, d.id, d.steps, d.value);
+    for (const ModelParameter& p : kFrameParameters) {
+        if (state.part < p.firstPart) continue;
+        const auto model = [&p](double v) { return withSetting(p.field, v); };
+        const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), state.dump.frame); }, p.low,
+                                       p.high, true, 16);
+        const Fit fit = refineFrameFit(rough.value, [&](double v) {
+            const auto e = frameError(model(v));
+            return e.mean + e.fractionOverOne;
+        });
+        if (frameWithin(frameError(model(fit.value)))) name(check, p.id, p.steps, {fit.value});
+    }
+}
+
+// The final frame (steps 6-10, 19-20, 35): the CPU tone map of the GPU's own buffers. The GPU
+// evaluates in float, the reference in double from the same read-back buffers: a channel lands one
+// step away only next to a rounding boundary, so at most 1 step and rarely.
+bool frameCheck(CaseState& state, const CheckSpec& spec, Check& check) {
+    const ImageF* bloom = state.part >= 2 ? &state.bloom1 : nullptr;
+    const FrameInputs inputs{state.acc, state.gpuKey, bloom, nullptr};
+    const Image8 expected = modelFrame(inputs, FrameModel{});
+    const auto error = t10::test::byteError(expected, state.dump.frame);
+    check.passed = frameWithin(error);
+    check.measured = "largest error " + std::to_string(error.max) + " 8-bit steps, mean " + format(error.mean) +
+                     " 8-bit steps, " + format(error.fractionOverOne * 100.0) + "% of pixels off by more than 1 step";
+    check.tolerance = "largest <= 1 8-bit step and mean <= 0.01 8-bit steps: float vs double rounding only";
+    if (check.passed) return true;
+    state.writer.attachImages(check, expected);
+    const Check& levels = earlier(state, spec, "luminance-levels");
+    if (onlyBlackPixelsOff(state.acc, expected, state.dump.frame)) {
+        name(check, "black-0-over-0", {9}, {}, "the NaN pixels are painted magenta by the grader's probe");
+    } else if (!levels.passed) {
+        inherit(check, levels, "the final pass reads the key from a level that is not 1x1");
+    } else {
+        nameFrameMistakes(state, bloom, check);
+        check.unexplained = describeFrame(expected, state.dump.frame);
+        rebuildDiagnosis(check);
+    }
+    return true;
+}
+
+std::vector<int> stepsOf(std::initializer_list<int> steps) { return steps; }
+
+// The checks of one case in the order the chain computes them: a check reads only the buffers of
+// its own steps and the checks it follows from, which come before it.
+const std::vector<CheckSpec>& checkTable() {
+    static const std::vector<CheckSpec> table{
+        {"luminance-levels", 1, 3, [](int) { return stepsOf({13, 15}); }, {}, luminanceLevelsCheck},
+        {"log-luminance", 1, 3, [](int) { return stepsOf({3, 4, 5}); }, {}, logLuminanceCheck},
+        {"key", 1, 3, [](int) { return stepsOf({3, 4, 5, 15}); }, {"log-luminance", "luminance-levels"}, keyCheck},
+        {"bloom-threshold", 2, 3, [](int) { return stepsOf({17, 18}); }, {"log-luminance"}, bloomThresholdCheck},
+        {"bloom-downsample", 2, 2, [](int) { return stepsOf({22, 24}); }, {}, bloomDownsampleCheck},
+        {"blur-passes", 3, 3, [](int) { return stepsOf({27, 32, 33, 34}); }, {}, blurPassesCheck},
+        {"blur-pass-count", 3, 3, [](int) { return stepsOf({34}); }, {"blur-passes"}, blurPassCountCheck},
+        {"blur", 3, 3, [](int) { return stepsOf({27, 30, 31, 32, 33, 34}); }, {"blur-passes"}, blurCheck},
+        {"frame", 1, 3, frameSteps, {"luminance-levels"}, frameCheck},
+    };
+    return table;
+}
+
+} // namespace
+
 std::vector<Check> bufferChecks(int part, const CaseRun& run, const std::string& reportDir, const std::string& imageDir) {
-    const t10::test::Dump& dump = run.dump;
-    const ImageF& acc = dump.accumulation;
     const CheckWriter writer(run, reportDir, imageDir);
-    std::vector<Check> checks;
-
-    // Luminance mip chain (step 13): floor(log2(max)) + 1 levels reach the 1x1 key.
-    {
-        Check check = writer.make("luminance-levels", {13, 15});
-        const int side = std::max(acc.width, acc.height);
-        const int expected = int(std::floor(std::log2(side))) + 1;
-        const int levels = dump.luminanceLevels();
-        check.passed = levels == expected;
-        check.measured = std::to_string(levels) + " levels on unit 16 at " + std::to_string(acc.width) + "x" +
-                         std::to_string(acc.height);
-        check.tolerance = "exactly floor(log2(" + std::to_string(side) + ")) + 1 = " + std::to_string(expected) +
-                          ": fewer levels never reach the 1x1 average, more cannot be allocated";
-        if (!check.passed) {
-            if (levels == int(std::ceil(std::log2(side)))) name(check, "ceil-log2-levels", {13});
-            else check.diagnosis = levels == 0 ? "no luminance texture on unit 16 (steps 12-13)"
-                                               : "the luminance texture does not have the full mip chain (step 13)";
-        }
-        checks.push_back(check);
+    CaseState state(part, run, writer);
+    for (const CheckSpec& spec : checkTable()) {
+        if (part < spec.firstPart || part > spec.lastPart) continue;
+        Check check = writer.make(spec.what, spec.steps(part));
+        const bool goOn = spec.run(state, spec, check);
+        state.checks.push_back(std::move(check));
+        if (!goOn) break;
     }
-
-    // Luminance level 0 (steps 3-5): every pixel's range-mapped log luminance.
-    std::optional<ref::Rgb> studentWeights;
-    {
-        Check check = writer.make("log-luminance", {3, 4, 5});
-        const ImageF level0 = dump.level(kLuminanceUnit, 0);
-        const double worst = worstLuminanceSteps(level0, acc, KeyModel{});
-        // The GPU's float log differs from the double one by about 1e-7 of the mapped range, far below
-        // one R16 step (1.5e-5), so a texel rounds at most to the neighbouring step. At sizes that are
-        // not a power of two gl_FragCoord x 1 / size lands a hair off the texel centre, and beside a
-        // lamp 1e-6 of its light moves a dark texel's log: 2 steps measured at 160x90. A wrong weight,
-        // base or bound moves texels by hundreds of steps.
-        constexpr double kSteps = 4.0;
-        check.passed = worst <= kSteps;
-        check.measured = "largest difference " + format(worst) + " R16 steps (1/65535 of the mapped range) over " +
-                         std::to_string(acc.width) + "x" + std::to_string(acc.height) + " pixels";
-        check.tolerance = "<= 4 R16 steps: float vs double rounding, and off-centre sampling beside bright "
-                          "pixels (2 measured); a wrong weight or base is hundreds of steps off";
-        if (!check.passed) {
-            if (const std::optional<ref::Rgb> w = fitWeights(level0, acc)) {
-                KeyModel model;
-                model.settings.lumaWeights = *w;
-                if (worstLuminanceSteps(level0, acc, model) <= kSteps) {
-                    studentWeights = *w;
-                    name(check, "luminance-weights", {3}, {(*w)[0], (*w)[1], (*w)[2]});
-                }
-            }
-            struct Parameter {
-                const char* id;
-                double ref::Settings::*field;
-                double low, high;
-                int step;
-            };
-            const Parameter parameters[] = {{"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, 4},
-                                            {"white-point", &ref::Settings::whitePoint, 0.02, 20.0, 5}};
-            for (const Parameter& p : parameters) {
-                const auto model = [&](double v) {
-                    KeyModel m;
-                    m.settings.*(p.field) = v;
-                    return m;
-                };
-                const Fit fit = fitParameter([&](double v) { return worstLuminanceSteps(level0, acc, model(v)); }, p.low,
-                                             p.high, true);
-                if (fit.error <= kSteps) name(check, p.id, {p.step}, {fit.value});
-            }
-            KeyModel log2Pass;
-            log2Pass.log2Pass = true;
-            if (worstLuminanceSteps(level0, acc, log2Pass) <= kSteps) name(check, "log2-exp-mismatch", {4});
-            if (check.mistakes.empty()) {
-                std::vector<double> expected, got;
-                for (int y = 0; y < acc.height && level0.width == acc.width; ++y)
-                    for (int x = 0; x < acc.width; ++x) {
-                        expected.push_back(modelMapped(texel(acc, x, y), KeyModel{}));
-                        got.push_back(level0.at(x, y, 0));
-                    }
-                const std::string shape = errorShape(expected, got, 1.0 / 65535.0, "R16 steps");
-                check.diagnosis = "luminance level 0 is the first buffer that goes wrong, and no catalogue mistake "
-                                  "explains it" + (shape.empty() ? std::string() : ": " + shape) +
-                                  "; check the luminance, log and range mapping of PostProcessInit.frag (steps 3-5)";
-            }
-        }
-        checks.push_back(check);
-    }
-
-    // The scene key (steps 3-5, 15): the smallest level against the CPU log-average.
-    const double gpuKey = gpuMappedKey(dump);
-    {
-        Check check = writer.make("key", {3, 4, 5, 15});
-        const double cpu = ref::meanMappedLogLuminance(acc, true);
-        const int roundings = std::max(0, dump.luminanceLevels() - 1);
-        const bool exactChain = (acc.width & (acc.width - 1)) == 0 && (acc.height & (acc.height - 1)) == 0;
-        // Power-of-two sizes: every 2x2 average is exact and each level rounds to R16 once, half a step
-        // per level. Other sizes: glGenerateMipmap's filter is implementation-defined for odd levels, so
-        // 2% of the mapped range (0.34 in log luminance); a wrong formula is far beyond either.
-        const double bound = exactChain ? (0.5 * roundings + 0.01) / 65535.0 : 0.02;
-        check.passed = std::abs(gpuKey - cpu) <= bound;
-        check.measured = "mapped key " + format(gpuKey, 6) + ", CPU " + format(cpu, 6) + " (difference " +
-                         format(std::abs(gpuKey - cpu) * 65535.0) + " R16 steps)";
-        check.tolerance = exactChain ? "<= " + format(bound * 65535.0) + " R16 steps: half a step of rounding per mip level"
-                                     : "<= 1311 R16 steps (0.02 of the mapped range): glGenerateMipmap filters odd sizes as "
-                                       "the driver likes";
-        if (!check.passed) {
-            if (!checks[1].passed) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + checks[1].id + ": the key averages luminance level 0";
-            } else if (!checks[0].passed) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + checks[0].id + ": the smallest level written is not the 1x1 average";
-            } else {
-                check.diagnosis = "level 0 is right but its average through the mip chain is not: check "
-                                  "glGenerateMipmap on the luminance texture (step 15)";
-                check.blame = {15};
-            }
-        }
-        checks.push_back(check);
-    }
-
-    ImageF bloom0;
-    ImageF bloom1;
-    if (part >= 2) {
-        // Bloom level 0 (steps 17-18): exactly the pixels at or above 2.95 x Yw, with their colour.
-        Check check = writer.make("bloom-threshold", {17, 18});
-        if (dump.levelCount(kBloomUnit) < 2) {
-            check.measured = std::to_string(dump.levelCount(kBloomUnit)) + " levels on unit 17";
-            check.tolerance = "the bloom texture has 2 levels (step 22)";
-            check.diagnosis = "no two-level bloom texture on unit 17 (steps 21-23)";
-            check.blame = range(17, 25);
-            checks.push_back(check);
-            return checks;
-        }
-        bloom0 = dump.bloom(0);
-        bloom1 = dump.bloom(1);
-        const ImageF cpu = ref::bloomThreshold(acc);
-        const ref::Rgb rec709{t10::contract::kLumaRed, t10::contract::kLumaGreen, t10::contract::kLumaBlue};
-        const int wrong = misclassified(acc, bloom0, ref::kBloomThreshold, rec709);
-        const double worst = wrong == 0 ? worstStoreError(bloom0, cpu, &cpu) : 0.0;
-        check.passed = wrong == 0 && worst <= 1.0;
-        check.measured = std::to_string(wrong) + " pixels on the wrong side of the threshold; worst colour error " +
-                         format(worst) + " R11G11B10F steps";
-        check.tolerance = "0 misclassified (pixels within 1e-6 of the threshold excepted: float vs double), colour "
-                          "within 1 step of GL_R11F_G11F_B10F (6/5 mantissa bits)";
-        if (!check.passed && allZero(bloom0) && !allZero(cpu)) {
-            check.diagnosis = "step 18 not implemented: bloom level 0 is black, nothing was written to location 1";
-            check.blame = {17, 18};
-        } else if (!check.passed && wrong == 0) {
-            check.diagnosis = "the right pixels bloom but with the wrong colour (" + format(worst) +
-                              " R11G11B10F steps off): write the accumulation colour to location 1 (step 18)";
-            check.blame = {18};
-        } else if (!check.passed) {
-            if (studentWeights && misclassified(acc, bloom0, ref::kBloomThreshold, *studentWeights) == 0) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + checks[1].id + ": the threshold tests the luminance of step 3, whose "
-                                  "weights are wrong";
-            } else {
-                const ThresholdInterval interval = thresholdInterval(acc, bloom0, rec709);
-                if (interval.low < interval.high && interval.high < 1e300 && interval.low > 0.0) {
-                    const double factor = std::sqrt(interval.low * interval.high) / ref::kYwhite;
-                    name(check, "bloom-threshold", {18}, {factor},
-                         "between " + format(interval.low / ref::kYwhite, 3) + " and " +
-                             format(interval.high / ref::kYwhite, 3) + " x Yw: the input has no luminance in between");
-                } else {
-                    check.diagnosis = "bloom level 0 is the first buffer that goes wrong: no luminance threshold "
-                                      "separates the pixels that bloom from those that do not (step 18)";
-                }
-            }
-        }
-        checks.push_back(check);
-    }
-
-    if (part == 2) {
-        // Bloom level 1 (steps 22, 24): the 2x2 average glGenerateMipmap writes (exact for even sizes).
-        Check check = writer.make("bloom-downsample", {22, 24});
-        const ImageF cpu = ref::boxDownsample(bloom0);
-        const bool even = acc.width % 2 == 0 && acc.height % 2 == 0;
-        const double worst = bloom1.width == cpu.width && bloom1.height == cpu.height ? worstStoreError(bloom1, cpu) : 1e9;
-        check.passed = worst <= (even ? 1.0 : 64.0);
-        check.measured = "worst error " + format(worst) + " R11G11B10F steps against the 2x2 average of level 0";
-        check.tolerance = even ? "<= 1 step: each texel averages exactly four level-0 texels and is stored once"
-                               : "<= 64 steps: odd sizes are filtered as the driver likes";
-        if (!check.passed) {
-            if (allZero(bloom1) && !allZero(bloom0)) name(check, "bloom-level1-missing", {24});
-            else check.diagnosis = "bloom level 1 is the first buffer that goes wrong, and it is not the 2x2 average "
-                                   "of level 0: check glGenerateMipmap on unit 17 (step 24)";
-        }
-        checks.push_back(check);
-    }
-
-    if (part >= 3) {
-        // Every blur pass (steps 27, 32-34): each captured pass against one CPU Gaussian pass of the
-        // texture the GPU wrote one pass earlier (bloom level 0 for the first), so the first pass that
-        // goes wrong is named, whatever the passes after it do. The whole blur (level 1) is checked
-        // after it, with the pass count and the constants the passes measured.
-        std::vector<CapturedPass> passes;
-        const bool captured = loadPasses(dump.dir, passes);
-        const ref::FloatStore store = ref::detectFloatStore(bloom0, ref::bloomThreshold(acc));
-        const int w = std::max(1, bloom0.width / 2);
-        const int h = std::max(1, bloom0.height / 2);
-
-        Check passCheck = writer.make("blur-passes", {27, 32, 33, 34});
-        passCheck.tolerance = "each pass: worst <= 2/32 of the peak (two R11G11B10F blue steps), mean <= 1e-4 of the "
-                              "peak, against one CPU pass of the GPU's previous pass";
-        std::string worstText;
-        double worstMean = -1.0;
-        std::vector<BlurFinding> passFindings;
-        passCheck.passed = captured && !passes.empty();
-        if (!captured) {
-            passCheck.measured = "no pass was captured (the grader's capture did not run)";
-            passCheck.diagnosis = "the program did not run the frame loop's pass capture (--capture-passes)";
-        } else if (passes.empty()) {
-            passCheck.measured = "the blur program drew no pass into a texture";
-            passCheck.diagnosis = "no blur pass: check the blur framebuffers and draws (steps 30, 32-34)";
-        }
-        for (std::size_t k = 0; k < passes.size() && passCheck.passed; ++k) {
-            const ImageF& source = k == 0 ? bloom0 : passes[k - 1].image;
-            const bool horizontal = k % 2 == 0;
-            const ImageF expected = modelPass(source, w, h, horizontal, ref::Settings{}, store);
-            const PeakError error = peakError(passes[k].image, expected);
-            const std::string figures = passName(k) + " (subroutine " + passes[k].subroutine + "): worst " +
-                                        format(error.worst) + " of the peak, mean " + format(error.mean) + " of the peak";
-            if (blurWithin(error)) {
-                if (error.mean > worstMean) {
-                    worstMean = error.mean;
-                    worstText = figures;
-                }
-                continue;
-            }
-            passCheck.passed = false;
-            passCheck.measured = "first failing pass: " + figures +
-                                 (k == 0 ? "" : k == 1 ? " (the pass before it is within tolerance)"
-                                                       : " (the " + std::to_string(k) + " passes before it are within tolerance)");
-            passFindings = fitPass(source, passes[k].image, w, h, horizontal, store);
-            // Named now; the whole blur below keeps those its chain confirms.
-            for (const BlurFinding& f : passFindings) {
-                const std::vector<int> steps = f.id == "swapped-subroutines" ? std::vector<int>{horizontal ? 32 : 33}
-                                                                             : std::vector<int>{27};
-                name(passCheck, f.id, steps, f.value, sigmaNote(f), f.loose);
-            }
-            if (passFindings.empty()) {
-                std::vector<double> e, g;
-                for (std::size_t i = 0; i < expected.data.size() && i < passes[k].image.data.size(); ++i) {
-                    e.push_back(expected.data[i]);
-                    g.push_back(passes[k].image.data[i]);
-                }
-                const std::string shape = errorShape(e, g, 1e-3, "");
-                passCheck.diagnosis = passName(k) + " is the first that goes wrong, and no sigma, tap or axis explains it" +
-                                      (shape.empty() ? std::string() : ": " + shape) +
-                                      "; check Gauss.frag's offsets and weights, and the texture this pass reads (steps 27, 32-34)";
-                passCheck.blame = {27};
-            }
-        }
-        if (passCheck.passed) passCheck.measured = std::to_string(passes.size()) + " passes within tolerance; the farthest: " + worstText;
-
-        // The number of passes (step 34): five pairs, counted from the captured draws.
-        Check count = writer.make("blur-pass-count", {34});
-        const int expectedPasses = 2 * ref::kBlurPasses;
-        count.passed = captured && int(passes.size()) == expectedPasses;
-        count.measured = std::to_string(passes.size()) + " blur passes drawn into textures";
-        count.tolerance = "exactly " + std::to_string(expectedPasses) + " (" + std::to_string(ref::kBlurPasses) +
-                          " horizontal + vertical pairs): the count is exact";
-        const int pairs = captured && passes.size() % 2 == 0 ? int(passes.size()) / 2 : ref::kBlurPasses;
-        if (!count.passed && captured && passes.empty()) {
-            name(count, "blur-missing", range(27, 34));
-        } else if (!count.passed && captured && passes.size() % 2 == 0) {
-            name(count, "blur-passes", {34}, {double(pairs)});
-        } else if (!count.passed && captured) {
-            count.diagnosis = std::to_string(passes.size()) + " passes, not whole horizontal + vertical pairs (step 34)";
-        } else if (!count.passed) {
-            count.diagnosis = passCheck.diagnosis;
-        }
-
-        // Bloom level 1 after the blur (steps 27-34): the CPU passes from the GPU's level 0.
-        Check check = writer.make("blur", {27, 30, 31, 32, 33, 34});
-        const ImageF cpu = ref::gaussianBloom(bloom0, ref::kBlurPasses, store);
-        const PeakError error = peakError(bloom1, cpu);
-        check.passed = blurWithin(error);
-        check.measured = "worst " + format(error.worst) + " of the peak, mean " + format(error.mean) + " of the peak";
-        check.tolerance = "worst <= 2/32 of the peak (two R11G11B10F blue steps), mean <= 1e-4 of the peak";
-        if (!check.passed && allZero(bloom1)) {
-            name(check, "bloom-level1-missing", {24});
-        } else if (!check.passed) {
-            // The chain with what the passes measured: the counted pairs and each fitted constant.
-            const auto chain = [&](const ref::Settings& s, int n) { return peakError(bloom1, ref::gaussianBloom(bloom0, n, store, s)); };
-            bool named = false;
-            for (const BlurFinding& f : passFindings) {
-                if (f.otherAxis) continue;
-                if (blurWithin(chain(f.settings, pairs))) {
-                    name(check, f.id, {27}, f.value, sigmaNote(f), f.loose);
-                    named = true;
-                }
-            }
-            // A constant that explains the first pass but not the chain of passes is not the student's.
-            if (named) {
-                keepFindings(passCheck, [&](const Finding& f) {
-                    return std::any_of(check.mistakes.begin(), check.mistakes.end(), [&](const Finding& c) { return c.id == f.id; });
-                });
-            }
-            const bool swapped = std::any_of(passFindings.begin(), passFindings.end(), [](const BlurFinding& f) { return f.otherAxis; });
-            if (!named && swapped) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + passCheck.id + " (see its diagnosis)";
-            } else if (!named && pairs != ref::kBlurPasses && blurWithin(chain(ref::Settings{}, pairs))) {
-                name(check, "blur-passes", {34}, {double(pairs)});
-            } else if (!named && blurWithin(peakError(bloom1, ref::boxDownsample(bloom0)))) {
-                name(check, "blur-missing", range(27, 34));
-            } else if (!named && !passCheck.passed) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + passCheck.id + " (see its diagnosis)";
-            } else if (!named) {
-                check.diagnosis = "every captured pass is right but level 1 is not their result: check which texture the "
-                                  "last pass draws into (steps 32-34)";
-                check.blame = {32, 33, 34};
-            }
-        }
-        checks.push_back(check);
-        checks.push_back(passCheck);
-        checks.push_back(count);
-    }
-
-    // The final frame (steps 6-10, 19-20, 35): the CPU tone map of the GPU's own buffers.
-    {
-        Check check = writer.make("frame", frameSteps(part));
-        const ImageF* bloom = part >= 2 ? &bloom1 : nullptr;
-        const FrameInputs inputs{acc, gpuKey, bloom, nullptr};
-        const Image8 expected = modelFrame(inputs, FrameModel{});
-        const auto error = t10::test::byteError(expected, dump.frame);
-        // The GPU evaluates in float, the reference in double from the same read-back buffers: a
-        // channel lands one step away only next to a rounding boundary, so at most 1 step and rarely.
-        check.passed = frameWithin(error);
-        check.measured = "largest error " + std::to_string(error.max) + " 8-bit steps, mean " + format(error.mean) +
-                         " 8-bit steps, " + format(error.fractionOverOne * 100.0) + "% of pixels off by more than 1 step";
-        check.tolerance = "largest <= 1 8-bit step and mean <= 0.01 8-bit steps: float vs double rounding only";
-        if (!check.passed) {
-            writer.attachImages(check, expected);
-            // Black pixels first: if every pixel off by more than a step is black in the input, the
-            // tone map divides 0 by 0 there.
-            bool onlyBlack = true;
-            bool anyBlack = false;
-            for (int y = 0; y < acc.height && onlyBlack; ++y)
-                for (int x = 0; x < acc.width; ++x) {
-                    int worst = 0;
-                    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(int(expected.at(x, y, k)) - int(dump.frame.at(x, y, k))));
-                    if (worst <= 1) continue;
-                    const ref::Rgb c = texel(acc, x, y);
-                    if (c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0) {
-                        anyBlack = true;
-                    } else {
-                        onlyBlack = false;
-                        break;
-                    }
-                }
-            if (onlyBlack && anyBlack) {
-                name(check, "black-0-over-0", {9}, {}, "the NaN pixels are painted magenta by the grader's probe");
-            } else if (!checks.front().passed) {
-                check.followsFrom = true;
-                check.diagnosis = "follows from " + checks.front().id + ": the final pass reads the key from a level "
-                                  "that is not 1x1";
-            } else {
-                std::vector<ImageF> levels;
-                for (int l = 0; l < dump.luminanceLevels(); ++l) levels.push_back(dump.level(kLuminanceUnit, l));
-                const FrameInputs withLevels{acc, gpuKey, bloom, &levels};
-                const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(modelFrame(withLevels, m), dump.frame); };
-                struct Discrete {
-                    const char* id;
-                    std::vector<int> steps;
-                    FrameModel model;
-                    std::vector<double> value;
-                };
-                std::vector<Discrete> discrete;
-                FrameModel m;
-                m.toneMap = false;
-                discrete.push_back({"tone-map-missing", range(6, 10), m, {}});
-                m = FrameModel{};
-                m.unmap = Unmap::None;
-                discrete.push_back({"missing-unmapping", {9}, m, {}});
-                m.unmap = Unmap::Log2ThenExp;
-                discrete.push_back({"log2-exp-mismatch", {9}, m, {}});
-                m.unmap = Unmap::LnThenExp2;
-                discrete.push_back({"log2-exp-mismatch", {9}, m, {}});
-                m = FrameModel{};
-                m.settings.lumaWeights = kRec601Weights;
-                discrete.push_back({"luminance-weights", {9}, m, {kRec601Weights[0], kRec601Weights[1], kRec601Weights[2]}});
-                for (int l = 0; l + 1 < int(levels.size()); ++l) {
-                    m = FrameModel{};
-                    m.keyLevel = l;
-                    discrete.push_back({"key-level", {8}, m, {double(l)}});
-                }
-                if (part >= 2) {
-                    m = FrameModel{};
-                    m.useBloom = false;
-                    discrete.push_back({"bloom-missing", {19, 20}, m, {}});
-                    m = FrameModel{};
-                    m.bloomAfter = true;
-                    discrete.push_back({"bloom-after-tonemap", {20}, m, {}});
-                }
-                if (part >= 3) {
-                    m = FrameModel{};
-                    m.region = Region::LowerLeftQuarter;
-                    discrete.push_back({"viewport-reset", {35}, m, {}});
-                    m = FrameModel{};
-                    m.halfInvResolution = true;
-                    discrete.push_back({"ubo-reset", {35}, m, {}});
-                }
-                for (const Discrete& d : discrete) {
-                    const bool already = std::any_of(check.mistakes.begin(), check.mistakes.end(), [&](const Finding& f) { return f.id == d.id; });
-                    if (!already && frameWithin(frameError(d.model))) name(check, d.id, d.steps, d.value);
-                }
-                struct Parameter {
-                    const char* id;
-                    double ref::Settings::*field;
-                    double low, high;
-                    std::vector<int> steps;
-                };
-                std::vector<Parameter> parameters{{"white-point", &ref::Settings::whitePoint, 0.02, 20.0, {9}},
-                                                  {"middle-grey", &ref::Settings::middleGrey, 0.3, 3.0, {9}},
-                                                  {"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, {9}}};
-                if (part >= 2) parameters.push_back({"bloom-weight", &ref::Settings::bloomWeight, 0.01, 10.0, {20}});
-                for (const Parameter& p : parameters) {
-                    const auto model = [&](double v) {
-                        FrameModel fm;
-                        fm.settings.*(p.field) = v;
-                        return fm;
-                    };
-                    const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), dump.frame); },
-                                                   p.low, p.high, true, 16);
-                    const Fit fit = refineFrameFit(rough.value, [&](double v) {
-                        const auto e = frameError(model(v));
-                        return e.mean + e.fractionOverOne;
-                    });
-                    if (frameWithin(frameError(model(fit.value)))) name(check, p.id, p.steps, {fit.value});
-                }
-                check.unexplained = describeFrame(expected, dump.frame);
-                rebuildDiagnosis(check);
-            }
-        }
-        checks.push_back(check);
-    }
-    return checks;
+    return state.checks;
 }
 
 } // namespace t10::grade
