@@ -26,9 +26,9 @@ set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SET
 
 set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weight tap sigma no_unmapping log2_exp black_nan
     bloom_after full_res_offsets ceil_levels swapped_subroutines viewport_reset pass_count
-    no_compile shader_error crash loop)
+    no_compile shader_error shader_bytes crash loop)
 set(GRADE_PART1 reference1 shaders1 equivalent1 p1_steps_missing p1_one_constant)
-set(GRADE_PART2 reference2 shaders2 equivalent2)
+set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias)
 foreach(part 1 2 3)
     set(folders "")
     foreach(name IN LISTS GRADE_PART${part})
@@ -55,7 +55,7 @@ endforeach()
 set(GRADE_FITTED fit_weights_a fit_weights_b fit_epsilon_a fit_epsilon_b fit_white_a fit_white_b fit_grey_a fit_grey_b
     fit_threshold_a fit_threshold_b fit_weight_a fit_weight_b fit_sigma_a fit_sigma_b fit_inner_a fit_inner_b
     fit_outer_a fit_outer_b fit_passes_a fit_passes_b fit_key_level_a fit_key_level_b
-    out_gamma out_swizzle out_blur_centre out_threshold_max)
+    out_gamma out_swizzle out_blur_centre out_threshold_max out_full_res_uv)
 set(folders "")
 foreach(name IN LISTS GRADE_FITTED)
     list(APPEND folders ${GRADE_SUBMISSIONS}/part3/${name})
