@@ -16,7 +16,7 @@
 // submission that makes it (tests/make_submissions.py).
 #include "checks/checks.hpp"
 
-#include "compare.hpp"
+#include "t10/compare.hpp"
 #include "diagnosis/fits.hpp"
 #include "reference.hpp"
 #include "t10/contract.hpp"

@@ -8,7 +8,7 @@
 // wrong.
 #pragma once
 #include "diagnosis/catalogue.hpp"
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // Part 2 numeric checks: the bloom threshold in level 0, the 2x2 downsample in level 1, the final
 // frame with the bloom added before the tone map, a frame with nothing to bloom, and the halo of
 // one hot pixel.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10_catch.hpp"

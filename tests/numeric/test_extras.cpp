@@ -12,7 +12,7 @@
 //                     CPU log-average where some do;
 //   --bench-csv       has its columns and one row per pass.
 // Every bound says why it is what it is; every measured figure is printed.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10/image_io.hpp"

@@ -1,7 +1,7 @@
 // Part 3 numeric checks: bloom level 1 after the five blur pass pairs against the same five-tap
 // bilinear passes on the CPU, the symmetry, centre and energy of one hot pixel's blur, odd sizes,
 // and the final frame against a CPU reference of the whole chain.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10_catch.hpp"

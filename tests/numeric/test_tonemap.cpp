@@ -3,7 +3,7 @@
 // The key's bounds are relative errors of Ya, the exposure a user sees, not of the range-mapped
 // value: one R16 step of the mapped range is a factor exp(16.9 / 65535) in Ya, and 2 % of the
 // range would be a factor 1.4.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10_catch.hpp"

@@ -10,7 +10,7 @@
 // ctest renders the dumps first (tests/teaching/teaching.cmake). T10_TEACHING_POSE=partA:partB makes
 // partA's frame stand in for partB's, which is how the ctest "teaching rejects" entries prove that
 // the checks fail on the wrong stage's picture. Every measured figure is printed.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10/image_io.hpp"

@@ -1,6 +1,6 @@
 // The golden comparison itself: it must accept driver-level noise and reject visible changes,
 // or the golden tests prove nothing.
-#include "compare.hpp"
+#include "t10/compare.hpp"
 
 #include "t10/error.hpp"
 

@@ -2,7 +2,7 @@
 // decoded with the encodings of t10::views and compared with the buffers the same run wrote with
 // --dump and the CPU reference of tests/numeric. T10_DUMP_DIR points at the views' folder
 // (tests/views_tests.cmake renders them first).
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 #include "reference.hpp"
 
 #include "t10/error.hpp"

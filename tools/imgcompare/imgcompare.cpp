@@ -3,7 +3,7 @@
 //   imgcompare GOLDEN.png ACTUAL.png TOLERANCE [--diff-prefix P] [--alter] [--expect-reject]
 // --alter inverts a block of ACTUAL first; --expect-reject succeeds only if the comparison fails
 // (the tests that prove a golden can fail).
-#include "compare.hpp"
+#include "t10/compare.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"

@@ -1,5 +1,6 @@
-// Golden-image comparison: the tolerance model (per-channel threshold, fraction of failing pixels,
-// mean error), its file format, and the difference heat-map written on failure.
+// Image comparison: the golden tests' tolerance model (per-channel threshold, fraction of failing
+// pixels, mean error), its file format, and the difference heat-map; imgcompare, the tests and the
+// grader share it.
 #pragma once
 #include "t10/image.hpp"
 

@@ -1,7 +1,7 @@
 // Loading the numeric-test dumps and measuring 8-bit differences; see dumps.hpp.
-#include "dumps.hpp"
+#include "t10/dumps.hpp"
 
-#include "compare.hpp"
+#include "t10/compare.hpp"
 
 #include "t10/error.hpp"
 #include "t10/image_io.hpp"

@@ -1,5 +1,5 @@
 // Implementation of the golden-image tolerance model; see compare.hpp.
-#include "compare.hpp"
+#include "t10/compare.hpp"
 
 #include "t10/error.hpp"
 

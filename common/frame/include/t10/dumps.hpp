@@ -1,5 +1,6 @@
-// Access to the buffers a stage wrote with --dump/--output for the numeric tests. The ctest
-// fixtures render them first; T10_DUMP_DIR points at their folder.
+// Access to the buffers a stage wrote with --dump/--output, for the numeric tests (the ctest fixtures
+// render them first; T10_DUMP_DIR points at their folder) and for the grader, which reads each
+// submission's dumps the same way.
 #pragma once
 #include "t10/contract.hpp"
 #include "t10/image.hpp"
@@ -29,7 +30,7 @@ struct Dump {
 Dump loadDump(const std::string& name);
 
 // Max and mean absolute difference between two 8-bit RGB images of the same size, in 8-bit steps
-// (tools/imgcompare's imageDifference, the golden tests' metric); throws t10::Error if the sizes differ.
+// (t10/compare.hpp's imageDifference, the golden tests' metric); throws t10::Error if the sizes differ.
 struct ByteError {
     int max = 0;
     double mean = 0.0;
