@@ -5,7 +5,7 @@ usage: function_length.py ROOT [--limit N] [--top K]
 
 Scans every .cpp/.hpp under ROOT except stage files (tutorial10_part*/Tutorial10.cpp and
 extras/Tutorial10.cpp keep the tutorial's shape), data generators (tools/make_*: tables of
-geometry and pixels), third-party code, build trees and grader/ (the grader's engineers own it).
+geometry and pixels), third-party code and build trees. The grader is held to the limit too.
 A function is a brace block opened outside any other function after a closing parenthesis (with
 optional const / noexcept / override / a trailing return type or a constructor's initialiser list);
 TEST_CASE bodies count as functions. Its length runs from the first line of its signature to its
@@ -21,10 +21,14 @@ import sys
 
 SKIP_PARTS = {"third_party", ".git", "_site"}
 BUILD_TREE = re.compile(r"^build($|-)")  # build/, build-release/, build-asan/ (CMakePresets.json)
-SKIP_PREFIXES = ("grader/", "tools/make_")
+SKIP_PREFIXES = ("tools/make_",)
 STAGE_FILE = re.compile(r"^(tutorial10_part[^/]*|extras)/Tutorial10\.cpp$")
 # Functions over the limit that another open issue splits: "path:name" -> the issue.
-PENDING: dict = {}
+PENDING: dict = {
+    "grader/isolation/sandbox.cpp:runSandboxed": "issue 29 (the process runner's split, engineer B)",
+    "grader/tga/grade_tga.cpp:main": "issue 29 (the TGA loader graded in the sandbox, engineer B)",
+    "grader/cli/grade.cpp:grade": "issue 29 (after the 0700 staging lands in Grader::grade, engineer B)",
+}
 SIGNATURE_END = re.compile(r"\)\s*(?:const\s*|noexcept\s*|override\s*|final\s*|mutable\s*|->\s*[\w:<>,\s*&]+)*$")
 CONSTRUCTOR = re.compile(r"\)\s*:\s*[\w:]+\s*[({]")
 

@@ -14,13 +14,29 @@ only headers of its own layer or of the layers it sits on:
     optional  content, platform, reference, base (t10_exact_key: extras and the bench)
     panel     frame, and all below frame         (t10_panel: Dear ImGui, extras only)
 
-and the glad loader (`glad/gl.h`); never stage code, a test's or a tool's header (`dumps.hpp`,
-`compare.hpp`, `../../tests/...`). A header is known by its path below its layer's include/ folder
+and the glad loader (`glad/gl.h`); never stage code, a test's or a tool's header (a bare `dumps.hpp`,
+`../../tests/...`). A header is known by its path below its layer's include/ folder
 (`t10/scene.hpp`), or by its file name where the layer has no include/ folder. `t10/stage.hpp`, what a stage offers the loop, may include nothing above the
 platform layer. No two files may need each other: the include graph between units (a header and
 its source, `views.hpp` + `views.cpp`) has no cycle. A code file in a folder that is no layer is a
 problem too (a new folder gets its rule here first). System headers (`<...>`) are not checked.
 Prints each problem with its file and line and exits 1 if there is any.
+
+usage: layers.py --grader GRADER_DIR COMMON_DIR
+
+checks the grader the same way: its folders are the stages of its pipeline, and a file may include
+the headers of common/ (as above) and those of its own stage and the stages before it:
+
+    isolation, intake, diagnosis      (nothing of the grader below them)
+    checks    diagnosis               (render results checked; mistakes named)
+    scoring   checks, diagnosis
+    report, platforms                 (one stage: the outputs) scoring, checks, diagnosis, intake
+    tga       isolation               (t10-grade-tga)
+    cli       every stage             (the command line on top)
+    tests     nothing of the grader
+
+A grader header is known by its path below the grader folder (`checks/checks.hpp`). No two grader
+files may need each other.
 """
 import pathlib
 import re
@@ -65,6 +81,22 @@ def code_files(common):
         yield (top if top in ALLOWED else None), path
 
 
+# The grader's stages and the stages each may include (itself included).
+OUTPUT_STAGES = {"report", "platforms", "scoring", "checks", "diagnosis", "intake"}
+GRADER_ALLOWED = {
+    "isolation": {"isolation"},
+    "intake": {"intake"},
+    "diagnosis": {"diagnosis"},
+    "checks": {"checks", "diagnosis"},
+    "scoring": {"scoring", "checks", "diagnosis"},
+    "report": OUTPUT_STAGES,
+    "platforms": OUTPUT_STAGES,
+    "tga": {"tga", "isolation"},
+    "cli": {"cli", "isolation", "intake", "checks", "diagnosis", "scoring", "report", "platforms"},
+    "tests": {"tests"},
+}
+
+
 def find_cycle(graph):
     """One cycle of `graph` (unit -> set of units) as a list of units, or None."""
     state = {}  # unit -> 1 while on the stack, 2 when done
@@ -92,7 +124,52 @@ def find_cycle(graph):
     return None
 
 
+def check_grader(grader, common):
+    """The problems of the grader's includes (see the module's docstring)."""
+    common_headers = {include_name(common, layer, path) for layer, path in code_files(common)
+                      if layer is not None and path.suffix in HEADER_SUFFIXES}
+    files = [path for path in sorted(grader.rglob("*")) if path.suffix in CODE_SUFFIXES and path.is_file()]
+    owner = {path.relative_to(grader).as_posix(): path.relative_to(grader).parts[0]
+             for path in files if path.suffix in HEADER_SUFFIXES}
+    problems = []
+    graph = {}
+    for path in files:
+        stage = path.relative_to(grader).parts[0]
+        if stage not in GRADER_ALLOWED:
+            problems.append(f"{path}: a code file outside the grader's stage folders ({', '.join(GRADER_ALLOWED)}); "
+                            "give its folder a rule in tests/layers.py")
+            continue
+        unit = path.relative_to(grader).with_suffix("").as_posix()
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            match = INCLUDE.match(line)
+            if not match:
+                continue
+            target = match.group(1)
+            if target in common_headers or target == "glad/gl.h":
+                continue
+            if target not in owner:
+                problems.append(f"{path}:{number}: includes \"{target}\", which is neither a header of common/ nor "
+                                "of the grader (test and tool code sit outside both)")
+                continue
+            if owner[target] not in GRADER_ALLOWED[stage]:
+                problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]}, a stage {stage} may not include")
+            other = pathlib.PurePosixPath(target).with_suffix("").as_posix()
+            if other != unit:
+                graph.setdefault(unit, set()).add(other)
+    while (cycle := find_cycle(graph)) is not None:
+        problems.append("cycle between files: " + " -> ".join(cycle) +
+                        " (each needs the other; move what both need into a unit below them)")
+        graph[cycle[-2]].discard(cycle[-1])
+    for problem in problems:
+        print(problem)
+    print(f"{len(files)} files in the stages of {grader}: " +
+          ("stages respected, no cycle" if not problems else f"{len(problems)} problems"))
+    return 1 if problems else 0
+
+
 def main():
+    if len(sys.argv) == 4 and sys.argv[1] == "--grader":
+        return check_grader(pathlib.Path(sys.argv[2]), pathlib.Path(sys.argv[3]))
     if len(sys.argv) != 2:
         print(__doc__)
         return 2

@@ -105,6 +105,25 @@ t10_add_layer_mutant("stage.hpp that includes the command line" frame/include/t1
                      "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(stage.hpp may include only")
 t10_add_layer_mutant("two files that need each other" frame/src/view_catalogue.cpp
                      "#include \"t10/views.hpp\"" "cycle between files: (view_catalogue -> views -> view_catalogue|views -> view_catalogue -> views)")
+# grader/: its folders are the stages of its pipeline, checked the same way (layers.py --grader), and
+# copies of grader/ with one include added must be reported.
+add_test(NAME "layers: grader/ folders include only the stages before them, no file cycle"
+         COMMAND ${EXPECT} 0 "stages respected, no cycle" -- ${Python3_EXECUTABLE} ${LAYERS} --grader
+                 ${PROJECT_SOURCE_DIR}/grader ${PROJECT_SOURCE_DIR}/common)
+function(t10_add_grader_layer_mutant name file line regex)
+    string(MAKE_C_IDENTIFIER "grader ${name}" folder)
+    set(root ${CMAKE_CURRENT_BINARY_DIR}/layers_check/${folder})
+    file(REMOVE_RECURSE ${root})
+    file(COPY ${PROJECT_SOURCE_DIR}/grader DESTINATION ${root} FILES_MATCHING PATTERN "*.hpp" PATTERN "*.cpp")
+    file(READ ${PROJECT_SOURCE_DIR}/grader/${file} source)
+    file(WRITE ${root}/grader/${file} "${line}\n${source}")
+    add_test(NAME "layers: rejects grader ${name}"
+             COMMAND ${EXPECT} 1 "${regex}" -- ${Python3_EXECUTABLE} ${LAYERS} --grader ${root}/grader ${PROJECT_SOURCE_DIR}/common)
+endfunction()
+t10_add_grader_layer_mutant("checks that include the report" checks/checks.hpp "#include \"report/report.hpp\""
+                            "checks.hpp:1: includes \"report/report.hpp\" of report, a stage checks may not include")
+t10_add_grader_layer_mutant("code that includes a test's header" checks/checks.cpp "#include \"dumps.hpp\""
+                            "checks.cpp:1: includes \"dumps.hpp\", which is neither a header of common/ nor of the grader")
 
 # --- Function length: no function over 120 lines outside stage files and data generators. --------
 set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)
