@@ -1,11 +1,12 @@
 // The checks t10-grade runs on one rendered case of a submission: every intermediate buffer that
 // the part writes (luminance levels and key, bloom levels, each blur pass as --capture-passes
-// recorded it, the blurred bloom) against the CPU
-// reference of tests/numeric, the final frame against the CPU tone map of the buffers the GPU
-// produced, and the frame against the reference stage with FLIP. A failed check fits the tutorial's
-// constants to the buffers (fits.hpp) and names a mistake of the catalogue (catalogue.hpp) only when
-// its fitted model explains them within the check's tolerance; otherwise it says how the buffer is
-// wrong.
+// recorded it, the blurred bloom) against the CPU reference (common/reference), the final frame
+// against the CPU tone map of the buffers the GPU produced, and the frame against the reference
+// stage with FLIP. The buffer checks are one table in checks.cpp (checkTable: id, steps, the checks
+// each follows from, its function). A failed check fits the tutorial's constants to the buffers
+// (fits.hpp) and names a mistake of the catalogue (catalogue.hpp) only when its fitted model
+// explains them within the check's tolerance, in every case (crossCheckCases); otherwise it says
+// how the buffer is wrong.
 #pragma once
 #include "diagnosis/catalogue.hpp"
 #include "t10/dumps.hpp"
