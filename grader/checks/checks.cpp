@@ -857,29 +857,39 @@ void reconcileBlurConstants(const AllCases& all) {
     }
 }
 
-// A mistake is named only when its model explains every case: a check keeps a finding only when the
-// same check of every other case that fails on its own names it too. A case whose check fails with
-// no model that explains it takes the names from every case (a mistake that shows as "no bloom"
-// where the bloom is saturated anyway, but not elsewhere, is not that mistake).
+// The frame's names must explain every case: a frame check keeps a finding only when the frame
+// check of every other case that fails on its own names it too (a mistake that shows as "no bloom"
+// where the bloom is saturated anyway, but not elsewhere, is not that mistake). The frame is what
+// every case renders whole, so a case whose frame no model explains vetoes every name. The buffer
+// checks keep, of several findings, those every other case names: a case whose inputs do not pin a
+// blur constant down (the extremes case's pass 1) does not veto the name the others measure.
 void keepFindingsOfEveryCase(const AllCases& all) {
-    for (const char* kind : {"luminance-levels", "log-luminance", "key", "bloom-threshold", "bloom-downsample", "blur-passes",
-                             "blur-pass-count", "blur", "frame"}) {
-        const std::vector<Check*> list = all.failed(kind);
-        std::set<std::string> everywhere;
-        for (const Finding& f : list.empty() ? std::vector<Finding>{} : list.front()->mistakes) everywhere.insert(f.id);
-        for (const Check* c : list)
-            for (auto it = everywhere.begin(); it != everywhere.end();)
-                it = names(*c, *it) ? std::next(it) : everywhere.erase(it);
+    const std::vector<Check*> frames = all.failed("frame");
+    std::set<std::string> everywhere;
+    for (const Finding& f : frames.empty() ? std::vector<Finding>{} : frames.front()->mistakes) everywhere.insert(f.id);
+    for (const Check* c : frames)
+        for (auto it = everywhere.begin(); it != everywhere.end();)
+            it = names(*c, *it) ? std::next(it) : everywhere.erase(it);
+    for (Check* c : frames) {
+        const std::size_t before = c->mistakes.size();
+        c->mistakes.erase(std::remove_if(c->mistakes.begin(), c->mistakes.end(),
+                                         [&](const Finding& f) { return everywhere.count(f.id) == 0; }),
+                          c->mistakes.end());
+        if (c->mistakes.size() == before) continue;
+        if (c->mistakes.empty() && c->unexplained.empty())
+            c->unexplained = "no catalogue mistake explains this check in every input: compare what " + stepRange(c->steps) +
+                             " write with the tutorial";
+        rebuildDiagnosis(*c);
+    }
+    for (const char* kind : {"log-luminance", "blur-passes", "blur"}) {
+        std::vector<Check*> list;
+        for (Check* c : all.failed(kind))
+            if (!c->mistakes.empty()) list.push_back(c);
         for (Check* c : list) {
-            const std::size_t before = c->mistakes.size();
-            c->mistakes.erase(std::remove_if(c->mistakes.begin(), c->mistakes.end(),
-                                             [&](const Finding& f) { return everywhere.count(f.id) == 0; }),
-                              c->mistakes.end());
-            if (c->mistakes.size() == before) continue;
-            if (c->mistakes.empty() && c->unexplained.empty())
-                c->unexplained = "no catalogue mistake explains this check in every input: compare what " + stepRange(c->steps) +
-                                 " write with the tutorial";
-            rebuildDiagnosis(*c);
+            if (c->mistakes.size() < 2) continue;
+            keepFindings(*c, [&](const Finding& f) {
+                return std::all_of(list.begin(), list.end(), [&](const Check* o) { return names(*o, f.id); });
+            });
         }
     }
 }
