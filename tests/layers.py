@@ -31,7 +31,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     checks    diagnosis               (render results checked; mistakes named)
     scoring   checks, diagnosis
     report, platforms                 (one stage: the outputs) scoring, checks, diagnosis, intake
-    tga       isolation               (t10-grade-tga)
+    tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
     cli       every stage             (the command line on top)
     tests     nothing of the grader
 
@@ -91,7 +91,7 @@ GRADER_ALLOWED = {
     "scoring": {"scoring", "checks", "diagnosis"},
     "report": OUTPUT_STAGES,
     "platforms": OUTPUT_STAGES,
-    "tga": {"tga", "isolation"},
+    "tga": {"tga", "isolation", "intake"},
     "cli": {"cli", "isolation", "intake", "checks", "diagnosis", "scoring", "report", "platforms"},
     "tests": {"tests"},
 }

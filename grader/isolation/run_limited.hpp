@@ -4,6 +4,8 @@
 // runSandboxed (sandbox.hpp), with no isolation: the grader's own user, its environment extended by
 // the caller's. Student code, a stage's or a TGA loader's, runs through runSandboxed with isolation.
 #pragma once
+#include "isolation/run_result.hpp"
+
 #include <string>
 #include <vector>
 
@@ -13,17 +15,6 @@ struct Limits {
     double wallSeconds = 60.0;
     int cpuSeconds = 120;
     long memoryMiB = 4096; // address space; Mesa's llvmpipe maps about 1 GiB for a small frame
-};
-
-struct RunResult {
-    int exitCode = -1;   // valid when neither signalled nor timedOut
-    int signal = 0;      // the signal that ended the process, 0 if it exited
-    bool timedOut = false;
-    double wallSeconds = 0.0;
-    std::string output;  // stdout and stderr, interleaved (the last 64 KiB)
-    bool ok() const { return !timedOut && signal == 0 && exitCode == 0; }
-    // "exit 1", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
-    std::string describe() const;
 };
 
 // Runs argv[0] with argv (PATH is searched); throws t10::Error if the process cannot be started.

@@ -11,7 +11,7 @@
 // Paths given to a step are written as they are inside (Mount::inside); SandboxRun::path() turns them
 // into host paths for the isolations that have no mount namespace.
 #pragma once
-#include "isolation/run_limited.hpp"
+#include "isolation/run_result.hpp"
 
 #include <iosfwd>
 #include <string>
