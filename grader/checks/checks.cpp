@@ -25,6 +25,7 @@
 #include "t10/outputs.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -962,11 +963,14 @@ struct CheckSpec {
     bool (*run)(CaseState& state, const CheckSpec& spec, Check& check);
 };
 
-// The check `what` made earlier for this case; `spec` must list it in followsFrom.
-Check& earlier(CaseState& state, const CheckSpec& spec, const std::string& what) {
-    const bool declared = std::any_of(spec.followsFrom.begin(), spec.followsFrom.end(), [&](const char* w) { return what == w; });
+// The check `what` made earlier for this case; `spec` must list it in followsFrom. `what` is a C string,
+// not a std::string: g++ 14's -Wdangling-reference takes a reference returned from a call with a
+// temporary string argument for a reference into that temporary.
+Check& earlier(CaseState& state, const CheckSpec& spec, const char* what) {
+    const bool declared = std::any_of(spec.followsFrom.begin(), spec.followsFrom.end(),
+                                      [&](const char* w) { return std::strcmp(what, w) == 0; });
     for (Check& check : state.checks)
-        if (declared && endsWith(check.id, "." + what)) return check;
+        if (declared && endsWith(check.id, std::string(".") + what)) return check;
     throw Error(std::string("grader bug: check ") + spec.what + " reads " + what + ", which it does not follow from or which did not run");
 }
 
