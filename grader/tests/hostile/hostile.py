@@ -22,10 +22,12 @@ import socket
 import stat
 import subprocess
 import sys
-import threading
 import time
 import zlib
 import struct
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import loopback  # noqa: E402 (grader/tests/loopback.py)
 
 MODE, SOURCE, GRADER, FLIP, OUT = sys.argv[1:6]
 STAGE = os.path.join(SOURCE, "tutorial10_part1_tonemap")
@@ -85,24 +87,8 @@ HOSTNAME = open("/etc/hostname").read().strip() if os.path.exists("/etc/hostname
 REFERENCE_SHADER = os.path.join(STAGE, "PostProcess.frag")
 
 # A local server that records any connection (the network attack).
-server = socket.socket()
-server.bind(("127.0.0.1", 0))
-server.listen(8)
-PORT = server.getsockname()[1]
-connections = []
-
-
-def serve():
-    while True:
-        try:
-            conn, _ = server.accept()
-        except OSError:
-            return
-        connections.append(conn.recv(100))
-        conn.close()
-
-
-threading.Thread(target=serve, daemon=True).start()
+LISTENER = loopback.Listener()
+PORT, connections = LISTENER.port, LISTENER.connections
 
 REF_HOST = open(os.path.join(STAGE, "Tutorial10.cpp")).read()
 REF_FRAG = open(REFERENCE_SHADER).read()
@@ -473,6 +459,6 @@ if "does not match its recorded hashes" not in again.stderr or "score 100" not i
     fail("a tampered reference frame was not noticed and rendered again: " + again.stdout + again.stderr)
 print("ok   a tampered reference frame is noticed and rendered again")
 
-server.close()
+LISTENER.close()
 print(f"{len(FAILURES)} failure(s)")
 sys.exit(1 if FAILURES else 0)

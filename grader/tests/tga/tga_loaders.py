@@ -21,6 +21,9 @@ import sys
 import threading
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import loopback  # noqa: E402 (grader/tests/loopback.py)
+
 MODE, SOURCE, GRADER, OUT = sys.argv[1:5]
 FIXTURES = os.path.join(SOURCE, "tests", "fixtures", "tga")
 LOADER = open(os.path.join(SOURCE, "common", "content", "src", "tga.cpp")).read()
@@ -149,24 +152,8 @@ OUTSIDE = [os.path.join(FIXTURES, f"pwned-{TOKEN}"), os.path.join(REPORTS, "pwne
            os.path.join(SUBS, "pwned"), HOST_TMP]
 
 # A local server that records any connection (the network attack).
-server = socket.socket()
-server.bind(("127.0.0.1", 0))
-server.listen(8)
-PORT = server.getsockname()[1]
-connections = []
-
-
-def serve():
-    while True:
-        try:
-            conn, _ = server.accept()
-        except OSError:
-            return
-        connections.append(conn.recv(100))
-        conn.close()
-
-
-threading.Thread(target=serve, daemon=True).start()
+LISTENER = loopback.Listener()
+PORT, connections = LISTENER.port, LISTENER.connections
 
 READS = {"beside": "path.substr(0, path.size() - 4) + \".png\"", "reference": json.dumps(os.path.join(FIXTURES, "rgb24_raw_bl.png")),
          "private": json.dumps(PRIVATE)}
@@ -313,7 +300,7 @@ for pid in filter(str.isdigit, os.listdir("/proc")):
     except OSError:
         pass
 expect("all", not leftover, f"no process of the job uids {sorted(job_uids)} left ({leftover or 'none'})")
-server.close()
+LISTENER.close()
 shutil.rmtree(OUT, ignore_errors=True)
 print(f"{len(FAILURES)} failure(s)")
 sys.exit(1 if FAILURES else 0)
