@@ -554,6 +554,30 @@ std::string checkFrame(const std::string& path, int width, int height) {
     }
     return "";
 }
+
+// Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
+// the report names them after the submission folder instead, as the student knows them.
+std::string studentPaths(std::string text, const fs::path& work, const std::string& submission) {
+    for (const std::string& prefix : {std::string("/submission/"), (work / "submission").string() + "/",
+                                      (work / "nan-probe-shaders").string() + "/"}) {
+        for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
+            text.replace(at, prefix.size(), submission + "/");
+            at += submission.size() + 1;
+        }
+    }
+    return text;
+}
+
+// Where one submission is graded: its parallel job, its report folder, its private work folder
+// (the copy of the submission is work/submission) and the sandbox its renders start from.
+struct Job {
+    int index;
+    fs::path out;
+    fs::path work;
+    SandboxRun base;
+    fs::path shaders() const { return work / "submission"; }
+};
+
 class Grader {
 public:
     explicit Grader(Config config);
@@ -588,6 +612,19 @@ private:
     std::string build(const std::string& source, int job, const fs::path& work, std::string& log) const;
     Check flipCheck(const CaseSpec& spec, const std::string& studentFrame, const std::string& reportDir,
                     const std::vector<Check>& caseChecks) const;
+    // The steps of grade(). Those that return bool (or "") set the report's status and message when
+    // the submission stops there.
+    Report startReport(const std::string& submission, const std::string& name) const;
+    fs::path makeJobFolder(uid_t uid) const;
+    bool copyIn(const std::string& submission, const Job& job, Report& report) const;
+    std::string buildSubmission(const Job& job, Report& report) const;
+    fs::path stageProgram(const std::string& built, const Job& job) const;
+    // Renders one case into `dir` (made here, for the job's uid) in the sandbox.
+    RunResult renderCase(const CaseSpec& spec, const Job& job, const fs::path& program, const fs::path& dir) const;
+    void reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const;
+    bool captureCases(const Job& job, const fs::path& program, Report& report, std::vector<CaseRun>& runs) const;
+    std::vector<Check> checkCase(const CaseSpec& spec, const CaseRun& run, const Job& job) const;
+    void score(const std::vector<CaseRun>& runs, const Job& job, Report& report) const;
 
     Config config_;
     PartInfo info_;
@@ -880,8 +917,7 @@ Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, c
     return check;
 }
 
-Report Grader::grade(const std::string& submission, const std::string& name, int job) const {
-    const auto start = std::chrono::steady_clock::now();
+Report Grader::startReport(const std::string& submission, const std::string& name) const {
     Report report;
     report.submission = name;
     report.path = submission;
@@ -889,6 +925,190 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
     report.rubric = loadRubric(config_.part); // a faulty rubric stops before any build or render
     report.isolation = isolationName(isolation_);
     report.fill = fillPolicyName(config_.fill);
+    return report;
+}
+
+fs::path Grader::makeJobFolder(uid_t uid) const {
+    const fs::path work = workRoot_ / ("job" + uniqueSuffix());
+    makeDir(work, 0, 0750);
+    if (uid != 0 && ::chown(work.c_str(), 0, uid) != 0) throw Error(work.string() + ": chown: " + std::strerror(errno));
+    return work;
+}
+
+bool Grader::copyIn(const std::string& submission, const Job& job, Report& report) const {
+    const CopiedSubmission copied = copySubmission(fs::absolute(submission).string(), files_, referenceStageDir(),
+                                                   config_.fill, job.shaders().string());
+    report.files = copied.files;
+    if (copied.empty) {
+        report.status = Status::Empty;
+        report.message = "the submission has no file of Part " + std::to_string(config_.part) +
+                         " (see the file list: a name in the wrong case or a symlink is not taken)";
+        return false;
+    }
+    if (!copied.missing.empty()) {
+        report.status = Status::MissingFiles;
+        report.message = "missing:";
+        for (const std::string& file : copied.missing) report.message += " " + file;
+        report.message += " (this part asks for them; the instructor's --fill-from-reference " +
+                          std::string(fillPolicyName(config_.fill)) + " does not take them from the reference)";
+        return false;
+    }
+    return true;
+}
+
+std::string Grader::buildSubmission(const Job& job, Report& report) const {
+    std::string log;
+    const std::string built = build((job.shaders() / "Tutorial10.cpp").string(), job.index, job.work, log);
+    std::ofstream(job.out / "build.log") << studentPaths(log, job.work, report.submission);
+    if (built.empty()) {
+        report.status = Status::BuildFailed;
+        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40), job.work, report.submission);
+    }
+    return built;
+}
+
+fs::path Grader::stageProgram(const std::string& built, const Job& job) const {
+    const uid_t uid = job.base.uid;
+    // The job's copy of the program: the cache is not readable by its uid.
+    const fs::path program = job.work / "student";
+    copyFile(built, program, 0750);
+    if (uid != 0 && ::chown(program.c_str(), 0, uid) != 0) throw Error(program.string() + ": chown: " + std::strerror(errno));
+    // Its own Mesa shader cache, started from the grader's seed (the reference's shaders, compiled
+    // when the reference rendered): what it writes there reaches no other submission.
+    const fs::path mesa = job.work / "mesa-cache";
+    const fs::path seed = fs::path(referenceDir_) / "mesa-seed";
+    if (fs::is_directory(fs::symlink_status(seed))) copyTree(seed, mesa, uid);
+    else makeDir(mesa, uid, 0700);
+    makeDir(job.work / "tmp", uid, 0700);
+    return program;
+}
+
+RunResult Grader::renderCase(const CaseSpec& spec, const Job& job, const fs::path& program, const fs::path& dir) const {
+    const fs::path logs = job.out / "runs" / spec.id;
+    fs::create_directories(logs);
+    makeDir(dir, job.base.uid, 0700);
+    std::string shaderDir = job.shaders().string();
+    if (spec.id == "extremes") {
+        const std::string probe = writeNanProbe(job.shaders().string(), (job.work / "nan-probe-shaders").string());
+        if (!probe.empty()) shaderDir = probe;
+    }
+    const bool namespaces = isolation_ == Isolation::Namespaces;
+    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
+    const std::string tmp = (job.work / "tmp").string();
+    SandboxRun run = job.base;
+    run.mounts.push_back({program.string(), "/t10/bin/student", false});
+    run.mounts.push_back({shaderDir, "/submission", false});
+    run.mounts.push_back({publicInputs_.string(), "/t10/inputs", false});
+    run.mounts.push_back({(job.work / "mesa-cache").string(), "/mesa-cache", true});
+    run.mounts.push_back({dir.string(), "/out", true});
+    run.workingDirectory = "/out";
+    // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
+    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
+               "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp),
+               "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
+    std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
+    for (const std::string& a : caseArgs(spec, run.path("/t10/inputs"))) argv.push_back(a);
+    argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
+                             run.path("/out/frame.png")});
+    // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
+    if (config_.part == 3) argv.insert(argv.end(), {"--capture-passes", run.path("/out")});
+    return runSandboxed(run, argv, (logs / "run.log").string());
+}
+
+void Grader::reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const {
+    const std::string& o = result.output;
+    if (result.timedOut || result.signal == SIGXCPU) {
+        report.status = Status::Timeout;
+    } else if (result.signal == 0 && (o.find("shader compilation failed") != std::string::npos ||
+                                      o.find("program link failed") != std::string::npos ||
+                                      o.find("shader not found") != std::string::npos)) {
+        report.status = Status::ShaderError;
+    } else {
+        report.status = Status::Crashed;
+    }
+    report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
+                     (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
+                     (result.signal == SIGXFSZ ? " (a file over the size limit)" : "") +
+                     ". Its last output:\n" + studentPaths(tail(o, 30), job.work, report.submission);
+}
+
+bool Grader::captureCases(const Job& job, const fs::path& program, Report& report, std::vector<CaseRun>& runs) const {
+    for (const CaseSpec& spec : cases(config_.part)) {
+        const fs::path dir = job.work / ("out-" + spec.id);
+        const RunResult result = renderCase(spec, job, program, dir);
+        if (!result.ok()) {
+            reportFailedRun(spec, result, job, report);
+            return false;
+        }
+        // Its outputs, as hostile files: every process of the run is dead, so they cannot change now.
+        std::string fault = checkOutputs(dir);
+        if (fault.empty()) fault = checkFrame((dir / "frame.png").string(), spec.width, spec.height);
+        if (!fault.empty()) {
+            report.status = Status::Crashed;
+            report.message = "case " + spec.id + " (" + spec.description + "): the program exited 0 but " +
+                             (fault.rfind("it ", 0) == 0 ? fault.substr(3) : "its output is unusable: " + fault);
+            return false;
+        }
+        runs.push_back(CaseRun{spec.id, spec.description, spec.camera, t10::test::Dump{}});
+        try {
+            runs.back().dump = loadDumpDir(dir.string());
+        } catch (const Error& error) {
+            report.status = Status::Crashed;
+            report.message = "case " + spec.id + ": the program exited 0 but wrote no readable output: " + error.what();
+            return false;
+        }
+    }
+    return true;
+}
+
+std::vector<Check> Grader::checkCase(const CaseSpec& spec, const CaseRun& run, const Job& job) const {
+    std::vector<Check> checks;
+    try {
+        checks = bufferChecks(config_.part, run, job.out.string(), (job.out / "images").string());
+    } catch (const Error& error) {
+        // A buffer the part must write is missing or malformed: one failed check says which.
+        Check check;
+        check.id = run.id + ".buffers";
+        check.steps = partSteps(config_.part);
+        check.measured = error.what();
+        check.tolerance = "every texture of the part is on its unit (15, 16, 17) with its full size and levels";
+        check.diagnosis = "the stage does not write the buffers of this part where the tutorial puts them";
+        checks.push_back(check);
+    }
+    if (spec.camera) {
+        Check flip = flipCheck(spec, (job.work / ("out-" + spec.id) / "frame.png").string(), job.out.string(), checks);
+        // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
+        // every buffer is right and the frame is not: it costs the steps that make the frame.
+        const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });
+        if (!flip.passed && buffersFailed) {
+            flip.followsFrom = true;
+            std::string ids;
+            for (const Check& c : checks)
+                if (!c.passed) ids += (ids.empty() ? "" : ", ") + c.id;
+            flip.diagnosis = "follows from " + ids + " (the frame shows what they diagnose)";
+        }
+        else if (!flip.passed) flip.blame = frameSteps(config_.part);
+        checks.push_back(flip);
+    }
+    return checks;
+}
+
+void Grader::score(const std::vector<CaseRun>& runs, const Job& job, Report& report) const {
+    report.status = Status::Graded;
+    const std::vector<CaseSpec> specs = cases(config_.part);
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+        const std::vector<Check> checks = checkCase(specs[i], runs[i], job);
+        report.checks.insert(report.checks.end(), checks.begin(), checks.end());
+    }
+    crossCheckCases(config_.part, runs, report.checks);
+}
+
+// The pipeline of one submission: intake (the private copy), build, staging of the program, the
+// renders of every case, then the checks and the score. Each step that fails sets the status and
+// the message, and the report is written as it stands.
+Report Grader::grade(const std::string& submission, const std::string& name, int job) const {
+    const auto start = std::chrono::steady_clock::now();
+    Report report = startReport(submission, name);
     const fs::path out = fs::absolute(config_.reportDir) / report.submission;
     fs::remove_all(out);
     fs::create_directories(out);
@@ -896,16 +1116,14 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
     // The job's private work folder: only the grader and the job's uid can enter it.
     const SandboxLimits renderLimits{config_.timeout, static_cast<int>(config_.timeout * 2) + 5, 4096, 64, 256, 64, 64};
     const SandboxRun base = sandbox(job, renderLimits);
-    const fs::path work = workRoot_ / ("job" + uniqueSuffix());
-    makeDir(work, 0, 0750);
-    if (base.uid != 0 && ::chown(work.c_str(), 0, base.uid) != 0) throw Error(work.string() + ": chown: " + std::strerror(errno));
+    const Job folders{job, out, makeJobFolder(base.uid), base};
     struct Cleanup {
         fs::path dir;
         ~Cleanup() {
             std::error_code error;
             fs::remove_all(dir, error);
         }
-    } cleanup{work};
+    } cleanup{folders.work};
     // Reports are written only here, after every process of the submission is dead (runSandboxed
     // returns only then).
     auto finish = [&](Report& r) {
@@ -915,158 +1133,13 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
         return r;
     };
 
-    const fs::path shaders = work / "submission";
-    // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
-    // the report names them after the submission folder instead, as the student knows them.
-    auto studentPaths = [&](std::string text) {
-        for (const std::string& prefix : {std::string("/submission/"), shaders.string() + "/", (work / "nan-probe-shaders").string() + "/"}) {
-            for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
-                text.replace(at, prefix.size(), report.submission + "/");
-                at += report.submission.size() + 1;
-            }
-        }
-        return text;
-    };
-    const CopiedSubmission copied = copySubmission(fs::absolute(submission).string(), files_, referenceStageDir(),
-                                                   config_.fill, shaders.string());
-    report.files = copied.files;
-    if (copied.empty) {
-        report.status = Status::Empty;
-        report.message = "the submission has no file of Part " + std::to_string(config_.part) +
-                         " (see the file list: a name in the wrong case or a symlink is not taken)";
-        return finish(report);
-    }
-    if (!copied.missing.empty()) {
-        report.status = Status::MissingFiles;
-        report.message = "missing:";
-        for (const std::string& file : copied.missing) report.message += " " + file;
-        report.message += " (this part asks for them; the instructor's --fill-from-reference " +
-                          std::string(fillPolicyName(config_.fill)) + " does not take them from the reference)";
-        return finish(report);
-    }
-
-    std::string log;
-    const std::string built = build((shaders / "Tutorial10.cpp").string(), job, work, log);
-    std::ofstream(out / "build.log") << studentPaths(log);
-    if (built.empty()) {
-        report.status = Status::BuildFailed;
-        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40));
-        return finish(report);
-    }
-    // The job's copy of the program: the cache is not readable by its uid.
-    const fs::path program = work / "student";
-    copyFile(built, program, 0750);
-    if (base.uid != 0 && ::chown(program.c_str(), 0, base.uid) != 0) throw Error(program.string() + ": chown: " + std::strerror(errno));
-    // Its own Mesa shader cache, started from the grader's seed (the reference's shaders, compiled
-    // when the reference rendered): what it writes there reaches no other submission.
-    const fs::path mesa = work / "mesa-cache";
-    const fs::path seed = fs::path(referenceDir_) / "mesa-seed";
-    if (fs::is_directory(fs::symlink_status(seed))) copyTree(seed, mesa, base.uid);
-    else makeDir(mesa, base.uid, 0700);
-    const fs::path tmp = work / "tmp";
-    makeDir(tmp, base.uid, 0700);
-
+    if (!copyIn(submission, folders, report)) return finish(report);
+    const std::string built = buildSubmission(folders, report);
+    if (built.empty()) return finish(report);
+    const fs::path program = stageProgram(built, folders);
     std::vector<CaseRun> runs;
-    const bool namespaces = isolation_ == Isolation::Namespaces;
-    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-    for (const CaseSpec& spec : cases(config_.part)) {
-        const fs::path logs = out / "runs" / spec.id;
-        fs::create_directories(logs);
-        const fs::path dir = work / ("out-" + spec.id);
-        makeDir(dir, base.uid, 0700);
-        std::string shaderDir = shaders.string();
-        if (spec.id == "extremes") {
-            const std::string probe = writeNanProbe(shaders.string(), (work / "nan-probe-shaders").string());
-            if (!probe.empty()) shaderDir = probe;
-        }
-        SandboxRun run = base;
-        run.mounts.push_back({program.string(), "/t10/bin/student", false});
-        run.mounts.push_back({shaderDir, "/submission", false});
-        run.mounts.push_back({publicInputs_.string(), "/t10/inputs", false});
-        run.mounts.push_back({mesa.string(), "/mesa-cache", true});
-        run.mounts.push_back({dir.string(), "/out", true});
-        run.workingDirectory = "/out";
-        // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
-        run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
-                   "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp.string()),
-                   "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp.string())};
-        std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
-        for (const std::string& a : caseArgs(spec, run.path("/t10/inputs"))) argv.push_back(a);
-        argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
-                                 run.path("/out/frame.png")});
-        // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
-        if (config_.part == 3) argv.insert(argv.end(), {"--capture-passes", run.path("/out")});
-        const RunResult result = runSandboxed(run, argv, (logs / "run.log").string());
-        if (!result.ok()) {
-            const std::string& o = result.output;
-            if (result.timedOut || result.signal == SIGXCPU) {
-                report.status = Status::Timeout;
-            } else if (result.signal == 0 && (o.find("shader compilation failed") != std::string::npos ||
-                                              o.find("program link failed") != std::string::npos ||
-                                              o.find("shader not found") != std::string::npos)) {
-                report.status = Status::ShaderError;
-            } else {
-                report.status = Status::Crashed;
-            }
-            report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
-                             (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
-                             (result.signal == SIGXFSZ ? " (a file over the size limit)" : "") +
-                             ". Its last output:\n" + studentPaths(tail(o, 30));
-            return finish(report);
-        }
-        // Its outputs, as hostile files: every process of the run is dead, so they cannot change now.
-        std::string fault = checkOutputs(dir);
-        if (fault.empty()) fault = checkFrame((dir / "frame.png").string(), spec.width, spec.height);
-        if (!fault.empty()) {
-            report.status = Status::Crashed;
-            report.message = "case " + spec.id + " (" + spec.description + "): the program exited 0 but " +
-                             (fault.rfind("it ", 0) == 0 ? fault.substr(3) : "its output is unusable: " + fault);
-            return finish(report);
-        }
-        runs.push_back(CaseRun{spec.id, spec.description, spec.camera, t10::test::Dump{}});
-        try {
-            runs.back().dump = loadDumpDir(dir.string());
-        } catch (const Error& error) {
-            report.status = Status::Crashed;
-            report.message = "case " + spec.id + ": the program exited 0 but wrote no readable output: " + error.what();
-            return finish(report);
-        }
-    }
-
-    report.status = Status::Graded;
-    const std::vector<CaseSpec> specs = cases(config_.part);
-    for (std::size_t i = 0; i < runs.size(); ++i) {
-        std::vector<Check> checks;
-        try {
-            checks = bufferChecks(config_.part, runs[i], out.string(), (out / "images").string());
-        } catch (const Error& error) {
-            // A buffer the part must write is missing or malformed: one failed check says which.
-            Check check;
-            check.id = runs[i].id + ".buffers";
-            check.steps = partSteps(config_.part);
-            check.measured = error.what();
-            check.tolerance = "every texture of the part is on its unit (15, 16, 17) with its full size and levels";
-            check.diagnosis = "the stage does not write the buffers of this part where the tutorial puts them";
-            checks.push_back(check);
-        }
-        if (specs[i].camera) {
-            Check flip = flipCheck(specs[i], (work / ("out-" + specs[i].id) / "frame.png").string(), out.string(), checks);
-            // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
-            // every buffer is right and the frame is not: it costs the steps that make the frame.
-            const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });
-            if (!flip.passed && buffersFailed) {
-                flip.followsFrom = true;
-                std::string ids;
-                for (const Check& c : checks)
-                    if (!c.passed) ids += (ids.empty() ? "" : ", ") + c.id;
-                flip.diagnosis = "follows from " + ids + " (the frame shows what they diagnose)";
-            }
-            else if (!flip.passed) flip.blame = frameSteps(config_.part);
-            checks.push_back(flip);
-        }
-        report.checks.insert(report.checks.end(), checks.begin(), checks.end());
-    }
-    crossCheckCases(config_.part, runs, report.checks);
+    if (!captureCases(folders, program, report, runs)) return finish(report);
+    score(runs, folders, report);
     return finish(report);
 }
 
