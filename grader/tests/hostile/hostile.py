@@ -19,7 +19,6 @@ import os
 import secrets
 import shutil
 import socket
-import stat
 import subprocess
 import sys
 import time
@@ -27,7 +26,7 @@ import zlib
 import struct
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-import loopback  # noqa: E402 (grader/tests/loopback.py)
+from hostile_support import closed_folder, skip, Listener  # noqa: E402 (grader/tests/)
 
 MODE, SOURCE, GRADER, FLIP, OUT = sys.argv[1:6]
 STAGE = os.path.join(SOURCE, "tutorial10_part1_tonemap")
@@ -37,18 +36,6 @@ FAILURES = []
 def fail(text):
     FAILURES.append(text)
     print("FAIL " + text)
-
-
-def skip(text):
-    print("SKIP: " + text)
-    sys.exit(77)
-
-
-def closed_folder(path):
-    """The nearest folder at or above PATH that other users may not enter (mode without o+x), or None."""
-    parts = os.path.realpath(path).split(os.sep)
-    folders = [os.sep.join(parts[:i]) or os.sep for i in range(len(parts), 0, -1)]
-    return next((f for f in folders if os.path.isdir(f) and not os.stat(f).st_mode & stat.S_IXOTH), None)
 
 
 if not os.access(FLIP, os.X_OK):
@@ -87,7 +74,7 @@ HOSTNAME = open("/etc/hostname").read().strip() if os.path.exists("/etc/hostname
 REFERENCE_SHADER = os.path.join(STAGE, "PostProcess.frag")
 
 # A local server that records any connection (the network attack).
-LISTENER = loopback.Listener()
+LISTENER = Listener()
 PORT, connections = LISTENER.port, LISTENER.connections
 
 REF_HOST = open(os.path.join(STAGE, "Tutorial10.cpp")).read()

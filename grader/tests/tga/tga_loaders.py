@@ -15,14 +15,13 @@ import os
 import secrets
 import shutil
 import socket
-import stat
 import subprocess
 import sys
 import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-import loopback  # noqa: E402 (grader/tests/loopback.py)
+from hostile_support import closed_folder, skip, Listener  # noqa: E402 (grader/tests/)
 
 MODE, SOURCE, GRADER, OUT = sys.argv[1:5]
 FIXTURES = os.path.join(SOURCE, "tests", "fixtures", "tga")
@@ -36,18 +35,6 @@ TOKEN = secrets.token_hex(6)
 def fail(text):
     FAILURES.append(text)
     print("FAIL " + text)
-
-
-def skip(text):
-    print("SKIP: " + text)
-    sys.exit(77)
-
-
-def closed_folder(path):
-    """The nearest folder at or above PATH that other users may not enter (mode without o+x), or None."""
-    parts = os.path.realpath(path).split(os.sep)
-    folders = [os.sep.join(parts[:i]) or os.sep for i in range(len(parts), 0, -1)]
-    return next((f for f in folders if os.path.isdir(f) and not os.stat(f).st_mode & stat.S_IXOTH), None)
 
 
 def wrapped(body, includes=""):
@@ -152,7 +139,7 @@ OUTSIDE = [os.path.join(FIXTURES, f"pwned-{TOKEN}"), os.path.join(REPORTS, "pwne
            os.path.join(SUBS, "pwned"), HOST_TMP]
 
 # A local server that records any connection (the network attack).
-LISTENER = loopback.Listener()
+LISTENER = Listener()
 PORT, connections = LISTENER.port, LISTENER.connections
 
 READS = {"beside": "path.substr(0, path.size() - 4) + \".png\"", "reference": json.dumps(os.path.join(FIXTURES, "rgb24_raw_bl.png")),
