@@ -270,6 +270,7 @@ TEST_CASE("PFM reader rejects bad headers and short data naming the file", "[ima
         {"overflow", "Pf\n99999999999999999999999 1\n-1.0\n" + eightBytes},
         {"zero_scale", "Pf\n1 1\n0\n" + eightBytes},
         {"bad_scale", "Pf\n1 1\nx\n" + eightBytes},
+        {"scale_trailing", "Pf\n1 1\n-1.0x\n" + eightBytes},
         {"no_scale", "Pf\n1 1"},
         {"short_data", "PF\n2 2\n-1.0\n" + eightBytes},
     };

@@ -35,7 +35,9 @@
 #include <cstring>
 #include <exception>
 #include <limits>
+#include <locale>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -445,10 +447,12 @@ ImageF readPfm(const std::string& path) {
     const int width = parseSide(token("width"), "width");
     const int height = parseSide(token("height"), "height");
     const std::string scaleText = token("scale");
+    // A C-locale stream, not std::from_chars: g++ 10's library has no floating-point from_chars.
+    std::istringstream scaleIn(scaleText);
+    scaleIn.imbue(std::locale::classic());
     double scale = 0.0;
-    const auto [scaleEnd, scaleEc] = std::from_chars(scaleText.data(), scaleText.data() + scaleText.size(), scale);
-    if (scaleEc != std::errc() || scaleEnd != scaleText.data() + scaleText.size() || scale == 0.0 ||
-        !std::isfinite(scale))
+    scaleIn >> scale;
+    if (scaleIn.fail() || scaleIn.peek() != std::char_traits<char>::eof() || scale == 0.0 || !std::isfinite(scale))
         fail(path, "PFM scale \"" + scaleText + "\" is not a non-zero number");
     ++pos; // the single whitespace byte that token() stopped at
 
