@@ -7,10 +7,11 @@ OUT      := out
 STAGES    = $(shell cat $(BUILD)/stages.txt 2>/dev/null)
 JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
-# Debian packages the build and `make run` need (the same names on Debian 12, Debian 13 and Ubuntu 24.04).
+# Debian packages the build and `make run` need (the same names on Debian 12, Debian 13 and Ubuntu 22.04
+# and 24.04). zlib1g-dev: OpenEXR 2.5's CMake package (Ubuntu 22.04) looks for zlib without depending on it.
 PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev libegl-dev libegl1-mesa-dev \
-            libgl1-mesa-dri libosmesa6-dev libopenexr-dev libstb-dev libcli11-dev libtinygltf-dev nlohmann-json3-dev \
-            libimgui-dev
+            libgl1-mesa-dri libosmesa6-dev libopenexr-dev zlib1g-dev libstb-dev libcli11-dev libtinygltf-dev \
+            nlohmann-json3-dev libimgui-dev
 # What `make test` needs on top: every program a test runs (time: tests/reliability/measure.sh runs
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; nodejs: the platform tests run GitHub Classroom's released grading reporter,
@@ -67,8 +68,10 @@ deps:
 # The tests are configured in only when Catch2 is installed (`make test` installs it), so that `make run`
 # needs none of the test packages; a build configured without them gains them when they arrive.
 TESTS_ON = $(shell dpkg-query -W -f='$${Status}' catch2 2>/dev/null | grep -q 'ok installed' && echo ON || echo OFF)
+# CONFIGURE_FLAGS: more -D settings for the first configure (make grader leaves extras/ out).
+CONFIGURE_FLAGS :=
 configure: deps
-	@if [ ! -f $(BUILD)/build.ninja ]; then cmake --preset $(PRESET) -DT10_BUILD_TESTS=$(TESTS_ON); \
+	@if [ ! -f $(BUILD)/build.ninja ]; then cmake --preset $(PRESET) -DT10_BUILD_TESTS=$(TESTS_ON) $(CONFIGURE_FLAGS); \
 	elif [ "$(TESTS_ON)" = ON ] && grep -qx 'T10_BUILD_TESTS:BOOL=OFF' $(BUILD)/CMakeCache.txt; then \
 	    echo "Catch2 is installed now: configuring $(BUILD)/ with the tests"; cmake $(BUILD) -DT10_BUILD_TESTS=ON; fi
 
@@ -291,10 +294,12 @@ run-stage:
 # installs and builds only what grading needs (t10-grade, the reference stages, FLIP); `make gradescope
 # PART=N` packs out/gradescope/partN/autograder.zip; `make prairielearn PART=N` writes
 # out/prairielearn/partN/ (the entrypoint and an info.json snippet).
-# The grader is built with the tests (it reuses their CPU reference), so it needs Catch2; bubblewrap is its sandbox.
-GRADER_PACKAGES := $(PACKAGES) catch2 bubblewrap python3-venv
+# The grader needs only common/ (not the tests, nor extras/ and its Dear ImGui): bubblewrap is its sandbox,
+# python3-venv holds FLIP. Configured without the tests and extras where make grader configures first.
+GRADER_PACKAGES := $(filter-out libimgui-dev,$(PACKAGES)) bubblewrap python3-venv
 .PHONY: grader grader-packages gradescope prairielearn platform-part
 grader: PACKAGES := $(GRADER_PACKAGES)
+grader: CONFIGURE_FLAGS := -DT10_BUILD_EXTRAS=OFF
 # The list the platforms' install script (grader/platforms/install_grader.sh) checks and installs.
 grader-packages:
 	@echo $(GRADER_PACKAGES)

@@ -3,12 +3,15 @@
 # reference stages, FLIP). The one install step of every platform image: Gradescope's setup.sh, the
 # Dockerfile for PrairieLearn's external grader and Gradescope's manual Docker route.
 #   usage: install_grader.sh CHECKOUT        (as root: it runs apt-get)
-# The project targets Debian 12 and 13. On another apt-based image (Gradescope's Ubuntu bases) it checks,
-# before building, that the release has every package the grader needs, in the versions it needs, and
-# supplies what can come from a registry reachable at image build time: CMake from PyPI (into
-# $T10_CMAKE_VENV, default /opt/t10-cmake) when the system's is older than the presets need (3.25).
-# What the release lacks otherwise is listed in one message, with the base image to choose instead,
-# and the script exits 1.
+# Debian 12 and 13 and Ubuntu 22.04 (Gradescope's default image) and 24.04 build the grader from their
+# own packages (make grader-packages). On any apt-based release it checks first that every package is
+# there, in a version the grader builds with (OpenEXR 2.5, g++ 10), and supplies what can come from a
+# registry reachable at image build time: CMake from PyPI (into $T10_CMAKE_VENV, default /opt/t10-cmake)
+# when the system's is older than the presets need (3.25; Ubuntu 22.04 has 3.22). What a release lacks
+# otherwise is listed in one message, with the base images that work, and the script exits 1.
+# After the build the reference stages' folders are closed to other users: where the grader cannot
+# have user namespaces (Gradescope, most Docker hosts) it runs each job as its own uid, which sees what
+# others may read.
 # Exit 0 when the grader is built; 1 when it cannot be; 2 on bad usage.
 set -euo pipefail
 if [ $# -ne 1 ] || [ ! -f "$1/Makefile" ]; then
@@ -20,7 +23,9 @@ say() { echo "install_grader.sh: $*"; }
 [ "$(id -u)" -eq 0 ] || { say "run it as root: it installs packages with apt-get" >&2; exit 1; }
 command -v apt-get >/dev/null || { say "no apt-get here: the grader installs Debian or Ubuntu packages" >&2; exit 1; }
 
-release=$( (. /etc/os-release && echo "${PRETTY_NAME:-$ID $VERSION_ID}") 2>/dev/null || echo "an unknown release")
+# T10_OS_RELEASE: another os-release file (grader/tests/platforms/install_check.sh plays other releases).
+os_release=${T10_OS_RELEASE:-/etc/os-release}
+release=$( (. "$os_release" && echo "${PRETTY_NAME:-$ID $VERSION_ID}") 2>/dev/null || echo "an unknown release")
 say "installing on $release"
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
@@ -35,16 +40,29 @@ for p in "${packages[@]}"; do
 done
 candidate() { apt-cache policy "$1" 2>/dev/null | sed -n 's/^ *Candidate: *//p'; }
 too_old=()
-# OpenEXR 3 (Debian 12 has 3.1; Ubuntu 22.04 has 2.5, whose API and CMake package differ).
-exr=$(candidate libopenexr-dev)
-if [ -n "$exr" ] && [ "$exr" != "(none)" ] && dpkg --compare-versions "$exr" lt 3; then
-    too_old+=("libopenexr-dev $exr (OpenEXR 3 is needed)")
-fi
+# older_than PACKAGE VERSION WHY: the release's candidate of PACKAGE is older than VERSION.
+older_than() {
+    local have
+    have=$(candidate "$1")
+    if [ -n "$have" ] && [ "$have" != "(none)" ] && dpkg --compare-versions "$have" lt "$2"; then
+        too_old+=("$1 $have ($3)")
+    fi
+}
+# OpenEXR 2.5 (Ubuntu 22.04, Debian 11) or 3: the Imf API the code uses; cmake/T10OpenEXR.cmake takes either package.
+older_than libopenexr-dev 2.5 "OpenEXR 2.5 or later is needed"
+# g++ 10 (C++17 with <filesystem> and <charconv> for integers); the meta-package's version has epoch 4.
+older_than g++ 4:10 "g++ 10 or later is needed"
 if [ ${#missing[@]} -gt 0 ] || [ ${#too_old[@]} -gt 0 ]; then
     say "$release cannot build the grader from its own packages:" >&2
-    [ ${#missing[@]} -eq 0 ] || say "  not in this release: ${missing[*]}" >&2
+    if [ ${#missing[@]} -gt 0 ]; then
+        say "  not in this release: ${missing[*]}" >&2
+        # Ubuntu keeps most of them in universe, which a trimmed image may leave out of its sources.
+        if (. "$os_release" 2>/dev/null && [ "${ID:-}" = ubuntu ]); then
+            say "  (on Ubuntu they are in the universe component: is it in /etc/apt/sources.list?)" >&2
+        fi
+    fi
     for t in "${too_old[@]}"; do say "  too old: $t" >&2; done
-    say "choose a base image with Debian 12 or 13, or Ubuntu 24.04 (on Gradescope: the base image selector)" >&2
+    say "choose a base image with Ubuntu 22.04 or 24.04, or Debian 12 or 13 (on Gradescope: the base image selector)" >&2
     exit 1
 fi
 say "installing ${#packages[@]} packages: ${packages[*]}"
@@ -65,5 +83,22 @@ if [ -z "$have" ] || dpkg --compare-versions "$have" lt "$need"; then
 fi
 say "CMake $have, $(c++ --version | head -n 1)"
 
+# The grader's sandbox passes bubblewrap --size (0.8 and later); an older one (Ubuntu 22.04: 0.6.1) is
+# refused at the grader's probe, which then isolates by uid, as it does where namespaces are not allowed.
+bwrap_version=$(bwrap --version 2>/dev/null | sed -n 's/^bubblewrap \([0-9.]*\).*/\1/p')
+if [ -n "$bwrap_version" ] && dpkg --compare-versions "$bwrap_version" lt 0.8; then
+    say "bubblewrap $bwrap_version is older than 0.8: the grader will run each job as its own uid (--isolation uid)"
+fi
+
 make -C "$checkout" --no-print-directory grader JOBS="${JOBS:-$(nproc)}"
 say "built $checkout/build/bin/t10-grade"
+
+# The reference stages (each part's answer) and extras/ (Part 3's with the exercises) closed to other
+# users, so that a job's uid cannot read their sources or shaders; the grader, as root, still reads them.
+closed=()
+for dir in "$checkout"/tutorial10_part[1-9]_* "$checkout/extras"; do
+    [ -d "$dir" ] || continue
+    chmod go-rwx "$dir"
+    closed+=("${dir#"$checkout"/}")
+done
+say "closed to other users: ${closed[*]}"

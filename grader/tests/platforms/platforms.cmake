@@ -65,8 +65,8 @@ foreach(case
 endforeach()
 
 # The platforms' install script (setup.sh, the Dockerfile) decides right for each release's packages:
-# played by stand-ins for apt-get, apt-cache and cmake, so nothing is installed.
-add_test(NAME "grade platforms: install_grader.sh refuses Ubuntu 22.04's packages, takes CMake from PyPI when too old"
+# played by stand-ins for apt-get, apt-cache, bwrap and cmake, so nothing is installed.
+add_test(NAME "grade platforms: install_grader.sh builds on Ubuntu 22.04 (CMake from PyPI), refuses an older release"
          COMMAND ${PLATFORM_TESTS}/install_check.sh ${PROJECT_SOURCE_DIR} ${PLATFORM_OUT}/install-check)
 
 # The students' GitHub Classroom workflow parses as YAML and has the shape the Classroom reporter needs;
