@@ -30,7 +30,8 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     isolation, intake, diagnosis      (nothing of the grader below them)
     checks    diagnosis               (render results checked; mistakes named)
     scoring   checks, diagnosis
-    report, platforms                 (one stage: the outputs) scoring, checks, diagnosis, intake
+    report    scoring, checks, diagnosis, intake    (report.json, report.html, gradebook, class index)
+    platforms report and what it may include          (the platforms' result files)
     tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
     cli       every stage             (the command line on top)
     tests     nothing of the grader
@@ -82,15 +83,15 @@ def code_files(common):
 
 
 # The grader's stages and the stages each may include (itself included).
-OUTPUT_STAGES = {"report", "platforms", "scoring", "checks", "diagnosis", "intake"}
+REPORT_STAGES = {"report", "scoring", "checks", "diagnosis", "intake"}
 GRADER_ALLOWED = {
     "isolation": {"isolation"},
     "intake": {"intake"},
     "diagnosis": {"diagnosis"},
     "checks": {"checks", "diagnosis"},
     "scoring": {"scoring", "checks", "diagnosis"},
-    "report": OUTPUT_STAGES,
-    "platforms": OUTPUT_STAGES,
+    "report": REPORT_STAGES,
+    "platforms": REPORT_STAGES | {"platforms"},
     "tga": {"tga", "isolation", "intake"},
     "cli": {"cli", "isolation", "intake", "checks", "diagnosis", "scoring", "report", "platforms"},
     "tests": {"tests"},

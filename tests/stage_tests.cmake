@@ -124,6 +124,9 @@ t10_add_grader_layer_mutant("checks that include the report" checks/checks.hpp "
                             "checks.hpp:1: includes \"report/report.hpp\" of report, a stage checks may not include")
 t10_add_grader_layer_mutant("code that includes a test's header" checks/checks.cpp "#include \"dumps.hpp\""
                             "checks.cpp:1: includes \"dumps.hpp\", which is neither a header of common/ nor of the grader")
+t10_add_grader_layer_mutant("a report that includes a platform's format" report/class_index.cpp
+                            "#include \"platforms/formats.hpp\""
+                            "class_index.cpp:1: includes \"platforms/formats.hpp\" of platforms, a stage report may not include")
 
 # --- Function length: no function over 120 lines outside stage files and data generators. --------
 set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)

@@ -146,7 +146,7 @@ std::string gradescope(const Report& report) {
     out << "{\n  \"score\": " << report.score() << ",\n  \"execution_time\": " << static_cast<long>(std::lround(report.seconds))
         << ",\n  \"output\": " << jsonQuoted(summary(report)) << ",\n  \"output_format\": \"text\""
         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
-    const std::vector<StepResult> steps = stepResults(report);
+    const std::vector<StepResult> steps = stepResults(report.scored());
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
         out << (i ? "," : "") << "\n    {\"name\": " << jsonQuoted(stepName(report, s.step)) << ", \"number\": \""
@@ -162,7 +162,7 @@ std::string gradescope(const Report& report) {
 std::string prairieLearn(const Report& report, const std::string& dir) {
     const bool gradable = report.status != Status::GraderError;
     std::ostringstream tests;
-    const std::vector<StepResult> steps = stepResults(report);
+    const std::vector<StepResult> steps = stepResults(report.scored());
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const StepResult& s = steps[i];
         std::string ids, message;
@@ -249,7 +249,7 @@ std::string classroom(const Report& report) {
     // reporter fails its step on fail or error: grade.yml decides whether the job fails).
     const std::string status = report.status == Status::GraderError ? "error" : report.score() == 100 ? "pass" : "fail";
     const std::vector<int> failed = report.failedSteps();
-    const std::vector<StepResult> steps = stepResults(report);
+    const std::vector<StepResult> steps = stepResults(report.scored());
     // The step to fix first: the earliest one a failed check blames (Report::fixFirst), else the first.
     const int fixStep = !failed.empty() ? failed.front() : steps.empty() ? 0 : steps.front().step;
     std::ostringstream out;
@@ -273,43 +273,6 @@ std::string classroom(const Report& report) {
 }
 
 } // namespace
-
-std::vector<StepResult> stepResults(const Report& report) {
-    // One test per step of the part, worth its whole points (rubric.hpp's wholePoints, the split the
-    // score adds up): a step fails when a failed check blames it (Report::failedSteps), so one mistake
-    // costs its step once, and the passed steps' points add up to report.score().
-    const std::vector<int> failed = report.failedSteps();
-    const std::map<int, int> whole = wholePoints(report.rubric, report.part);
-    std::vector<StepResult> out;
-    int earned = 0;
-    for (int step : partSteps(report.part)) {
-        StepResult s;
-        s.step = step;
-        for (const Check& c : report.checks) {
-            const std::vector<int> blamed = failedSteps(c);
-            const bool covers = std::find(c.steps.begin(), c.steps.end(), step) != c.steps.end();
-            const bool blames = std::find(blamed.begin(), blamed.end(), step) != blamed.end();
-            if (blames || (covers && c.passed)) s.checks.push_back(&c);
-        }
-        s.passed = report.status == Status::Graded && !report.checks.empty() &&
-                   std::find(failed.begin(), failed.end(), step) == failed.end();
-        const auto at = whole.find(step);
-        s.maxPoints = at == whole.end() ? 0 : at->second;
-        s.points = s.passed ? s.maxPoints : 0;
-        earned += s.points;
-        out.push_back(s);
-    }
-    // The score is at most 99 while any check fails: where no step is blamed (a rubric that gives the
-    // blamed steps 0 points), the point held back comes off the last passed step that has one.
-    for (auto s = out.rbegin(); earned > report.score() && s != out.rend(); ++s) {
-        const int held = std::min(s->points, earned - report.score());
-        if (held == 0) continue;
-        s->points -= held;
-        earned -= held;
-        s->note = std::to_string(held) + " point held back: 100 only when every check passes";
-    }
-    return out;
-}
 
 const std::vector<std::string>& formatNames() {
     static const std::vector<std::string> kNames{"gradescope", "prairielearn", "classroom"};

@@ -1,8 +1,6 @@
 // The class index and the LMS CSV; see class_index.hpp.
 #include "report/class_index.hpp"
 
-#include "platforms/formats.hpp"
-
 #include "report/output.hpp"
 #include "t10/error.hpp"
 #include "t10/json.hpp"
@@ -165,7 +163,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
     std::map<int, int> failures;
     for (const Report* r : sorted) {
         std::map<int, StepResult> byStep;
-        for (StepResult& s : stepResults(*r)) byStep[s.step] = s;
+        for (StepResult& s : stepResults(r->scored())) byStep[s.step] = s;
         const std::string name = nameOf(*r);
         out << "<tr><td class=\"l\"><a href=\"" << htmlEscape(r->submission) << "/report.html\">" << htmlEscape(r->submission)
             << "</a>" << (name.empty() ? "" : " (" + htmlEscape(name) + ")") << "</td><td>" << r->score() << "</td><td>"

@@ -54,23 +54,11 @@ int Report::passedCount() const {
     return passed;
 }
 
-std::vector<int> Report::failedSteps() const {
-    std::set<int> steps;
-    for (const Check& check : checks)
-        for (int step : grade::failedSteps(check)) steps.insert(step);
-    return {steps.begin(), steps.end()};
-}
+std::vector<int> Report::failedSteps() const { return blamedSteps(checks); }
 
-int Report::score() const {
-    if (status != Status::Graded || checks.empty()) return 0;
-    // The sum of the whole points (rubric.hpp) of the steps no failed check blames: the same points
-    // every platform's step tests carry (formats.cpp's stepResults).
-    const std::vector<int> failed = failedSteps();
-    int score = 0;
-    for (const auto& [step, points] : wholePoints(rubric, part))
-        if (!std::binary_search(failed.begin(), failed.end(), step)) score += points;
-    return passedCount() == static_cast<int>(checks.size()) ? score : std::min(score, 99);
-}
+Scored Report::scored() const { return {part, rubric, status == Status::Graded, checks}; }
+
+int Report::score() const { return grade::score(scored()); }
 
 namespace {
 

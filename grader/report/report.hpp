@@ -4,6 +4,7 @@
 #include "checks/checks.hpp"
 #include "report/status.hpp"
 #include "scoring/rubric.hpp"
+#include "scoring/score.hpp"
 #include "intake/submission_files.hpp"
 
 #include <string>
@@ -23,9 +24,10 @@ struct Report {
     std::string isolation;   // namespaces | uid | none: how the submission's code was contained
     std::string fill;        // --fill-from-reference: unchanged | all | none
     std::vector<SubmissionFile> files; // every file of the submission folder and where each came from
-    // 0-100: the whole points (rubric.hpp's wholePoints) of the steps no failed check blames; at most
-    // 99 while any check fails, so only a submission that passes every check gets 100; 0 for any
-    // status other than graded. Every output shows this number.
+    // What the score reads of the report (scoring/score.hpp).
+    Scored scored() const;
+    // 0-100 (scoring/score.hpp's score): the whole points of the steps no failed check blames; at
+    // most 99 while any check fails; 0 for any status other than graded. Every output shows this number.
     int score() const;
     int passedCount() const;
     // The steps the failed checks blame, each once, in tutorial order.
