@@ -18,6 +18,7 @@
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
 #include "report/report.hpp"
+#include "isolation/options.hpp"
 #include "isolation/run_limited.hpp"
 #include "isolation/sandbox.hpp"
 #include "intake/submission_files.hpp"
@@ -183,55 +184,38 @@ std::string nameFrom(const std::string& path, const std::string& how) {
 
 Config parse(int argc, char** argv) {
     Config config;
-    auto number = [](const std::string& option, const std::string& text, double low, double high) {
-        char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != '\0' || !(value >= low && value <= high)) {
-            std::ostringstream message;
-            message << option << " " << text << ": expected a number from " << low << " to " << high;
-            throw UsageError(message.str());
-        }
-        return value;
-    };
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-            return argv[++i];
-        };
+    Arguments args(argc, argv);
+    while (args.next()) {
+        const std::string& arg = args.arg();
         if (arg == "--help" || arg == "-h") {
             std::cout << kUsage;
             std::exit(0);
+        } else if (args.isolationOption(config.isolation)) {
+            continue;
         } else if (arg == "--part") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v != "1" && v != "2" && v != "3") throw UsageError("--part " + v + ": choose 1, 2 or 3");
             config.part = std::stoi(v);
         } else if (arg == "--report") {
-            config.reportDir = value();
+            config.reportDir = args.value();
         } else if (arg == "--jobs") {
-            config.jobs = static_cast<int>(number(arg, value(), 1, 64));
+            config.jobs = static_cast<int>(args.number(1, 64));
         } else if (arg == "--timeout") {
-            config.timeout = number(arg, value(), 1, 3600);
+            config.timeout = args.number(1, 3600);
         } else if (arg == "--cache") {
-            config.cacheDir = value();
+            config.cacheDir = args.value();
         } else if (arg == "--format") {
-            const std::string v = value();
+            const std::string v = args.value();
             const std::vector<std::string>& known = formatNames();
             if (std::find(known.begin(), known.end(), v) == known.end())
                 throw UsageError("--format " + v + ": choose gradescope, prairielearn or classroom");
             if (std::find(config.formats.begin(), config.formats.end(), v) == config.formats.end()) config.formats.push_back(v);
         } else if (arg == "--name-from") {
-            config.nameFrom = value();
+            config.nameFrom = args.value();
         } else if (arg == "--roster") {
-            config.roster = value();
-        } else if (arg == "--isolation") {
-            const std::string v = value();
-            if (v != "auto" && v != "namespaces" && v != "uid") throw UsageError("--isolation " + v + ": choose auto, namespaces or uid");
-            if (config.isolation != "none") config.isolation = v;
-        } else if (arg == "--no-sandbox") {
-            config.isolation = "none";
+            config.roster = args.value();
         } else if (arg == "--fill-from-reference") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v == "unchanged") config.fill = FillPolicy::Unchanged;
             else if (v == "all") config.fill = FillPolicy::All;
             else if (v == "none") config.fill = FillPolicy::None;

@@ -11,6 +11,7 @@
 // valid file, no output, crash, hang, accepted a malformed file, rejected (for malformed files). The
 // score is the share of cases passed, rounded down. Exit 0 when the submission got a result (graded,
 // empty, missing-files, build-failed), 1 when the grader failed, 2 on bad usage.
+#include "isolation/options.hpp"
 #include "isolation/run_limited.hpp"
 #include "isolation/sandbox.hpp"
 #include "intake/submission_files.hpp"
@@ -78,29 +79,17 @@ struct Job {
 
 Config parseArgs(int argc, char** argv) {
     Config config;
-    for (int i = 1; i < argc; ++i) {
-        const std::string arg = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-            return argv[++i];
-        };
+    Arguments args(argc, argv);
+    while (args.next()) {
+        const std::string& arg = args.arg();
         if (arg == "--help" || arg == "-h") {
             config.help = true;
+        } else if (args.isolationOption(config.isolation)) {
+            continue;
         } else if (arg == "--report") {
-            config.reportFile = value();
+            config.reportFile = args.value();
         } else if (arg == "--timeout") {
-            const std::string v = value();
-            char* end = nullptr;
-            config.timeout = std::strtod(v.c_str(), &end);
-            if (*end != '\0' || !(config.timeout >= 1 && config.timeout <= 600)) {
-                throw UsageError("--timeout " + v + ": expected 1 to 600 seconds");
-            }
-        } else if (arg == "--isolation") {
-            const std::string v = value();
-            if (v != "auto" && v != "namespaces" && v != "uid") throw UsageError("--isolation " + v + ": choose auto, namespaces or uid");
-            if (config.isolation != "none") config.isolation = v;
-        } else if (arg == "--no-sandbox") {
-            config.isolation = "none";
+            config.timeout = args.number(1, 600, "1 to 600 seconds");
         } else if (arg.rfind("--", 0) == 0) {
             throw UsageError("unknown option " + arg);
         } else if (!config.submission.empty()) {

@@ -12,15 +12,13 @@ import binascii
 import json
 import sys
 
+from validate_common import check_strings, each_test, is_number
+
 ENV_LIMIT = 131072 - len("GRADE_RESULTS=") - 1  # MAX_ARG_STRLEN: one "NAME=value" string, with its NUL
 TOP = {"version", "status", "max_score", "tests"}
 TEST = {"name", "status", "score", "message", "test_code", "filename", "line_no", "execution_time"}
 STATUS = {"pass", "fail", "error"}
 EPSILON = 0.005
-
-
-def is_number(value):
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def validate(data, raw, b64=None):
@@ -40,13 +38,7 @@ def validate(data, raw, b64=None):
     if not isinstance(tests, list) or not tests:
         return errors + ["tests is not a non-empty list"]
     total = 0.0
-    for i, test in enumerate(tests):
-        where = f"tests[{i}]"
-        if not isinstance(test, dict):
-            errors.append(f"{where} is not an object")
-            continue
-        for key in test.keys() - TEST:
-            errors.append(f"{where}: unknown field '{key}'")
+    for where, test in each_test(tests, TEST, errors):
         if not isinstance(test.get("name"), str) or not test.get("name"):
             errors.append(f"{where}: no name")
         if test.get("status") not in STATUS:
@@ -56,9 +48,7 @@ def validate(data, raw, b64=None):
             errors.append(f"{where}.score {score!r} is not a number >= 0")
         else:
             total += score
-        for key in ("message", "test_code", "filename", "execution_time"):
-            if key in test and not isinstance(test[key], str):
-                errors.append(f"{where}.{key} is not a string")
+        check_strings(test, ("message", "test_code", "filename", "execution_time"), where + ".", errors)
         if "line_no" in test and not (isinstance(test["line_no"], int) and not isinstance(test["line_no"], bool)):
             errors.append(f"{where}.line_no is not an integer")
     if is_number(most) and total > most + EPSILON:

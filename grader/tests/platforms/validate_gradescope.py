@@ -5,8 +5,9 @@ visibility and status, scores within [0, max_score], and the size limit we hold 
 
   validate_gradescope.py RESULTS_JSON...     prints every fault; exit 0 when there is none, 1 otherwise
 validate(data, raw) is used by check_platforms.py."""
-import json
 import sys
+
+from validate_common import check_strings, each_test, is_number, main
 
 FORMATS = {"text", "html", "simple_format", "md", "ansi"}
 VISIBILITY = {"hidden", "after_due_date", "after_published", "visible"}
@@ -17,10 +18,6 @@ TEST = {"score", "max_score", "status", "name", "name_format", "number", "output
 # Gradescope states no size limit; results this size render slowly, and ours stay far below it.
 LIMIT = 1000 * 1000
 EPSILON = 0.005  # points are written to 0.01
-
-
-def is_number(value):
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def validate(data, raw):
@@ -37,9 +34,7 @@ def validate(data, raw):
         errors.append(f"score {data['score']!r} is not a number >= 0")
     if "execution_time" in data and not (is_number(data["execution_time"]) and data["execution_time"] >= 0):
         errors.append(f"execution_time {data['execution_time']!r} is not a number >= 0")
-    for key in ("output",):
-        if key in data and not isinstance(data[key], str):
-            errors.append(f"{key} is not a string")
+    check_strings(data, ("output",), "", errors)
     for key in ("output_format", "test_output_format"):
         if key in data and data[key] not in FORMATS:
             errors.append(f"{key} {data[key]!r} is not one of {sorted(FORMATS)}")
@@ -50,16 +45,8 @@ def validate(data, raw):
     if not isinstance(tests, list):
         return errors + ["tests is not a list"]
     total_max = 0.0
-    for i, test in enumerate(tests):
-        where = f"tests[{i}]"
-        if not isinstance(test, dict):
-            errors.append(f"{where} is not an object")
-            continue
-        for key in test.keys() - TEST:
-            errors.append(f"{where}: unknown field '{key}'")
-        for key in ("name", "output", "number"):
-            if key in test and not isinstance(test[key], str):
-                errors.append(f"{where}.{key} is not a string")
+    for where, test in each_test(tests, TEST, errors):
+        check_strings(test, ("name", "output", "number"), where + ".", errors)
         if not test.get("name"):
             errors.append(f"{where}: no name")
         if "output_format" in test and test["output_format"] not in FORMATS:
@@ -86,23 +73,5 @@ def validate(data, raw):
     return errors
 
 
-def main():
-    if len(sys.argv) < 2:
-        print(__doc__, file=sys.stderr)
-        return 2
-    bad = 0
-    for path in sys.argv[1:]:
-        try:
-            with open(path, "rb") as f:
-                raw = f.read()
-            errors = validate(json.loads(raw.decode("utf-8")), raw)
-        except (OSError, ValueError) as error:
-            errors = [str(error)]
-        for error in errors:
-            print(f"{path}: {error}")
-        bad += bool(errors)
-    return 1 if bad else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(validate, __doc__))

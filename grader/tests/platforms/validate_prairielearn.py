@@ -8,19 +8,16 @@ description, points <= max_points, message and output; and the whole file within
 validate(data, raw) is used by check_platforms.py."""
 import base64
 import binascii
-import json
 import re
 import sys
+
+from validate_common import check_strings, each_test, is_number, main
 
 LIMIT = 1000 * 1000  # PrairieLearn rejects results over 1 MB; the decimal megabyte is the safe reading
 TOP = {"gradable", "score", "format_errors", "message", "output", "images", "tests", "succeeded"}
 TEST = {"name", "description", "points", "max_points", "message", "output", "images"}
 DATA_URI = re.compile(r"^data:image/(png|jpeg|gif|svg\+xml);base64,([A-Za-z0-9+/]*={0,2})$")
 EPSILON = 0.005
-
-
-def is_number(value):
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def check_images(images, where, errors):
@@ -67,24 +64,14 @@ def validate(data, raw):
         fe = data.get("format_errors")
         if not (isinstance(fe, str) and fe) and not (isinstance(fe, list) and fe and all(isinstance(x, str) for x in fe)):
             errors.append("not gradable, but format_errors is not a string or a list of strings saying why")
-    for key in ("message", "output"):
-        if key in data and not isinstance(data[key], str):
-            errors.append(f"{key} is not a string")
+    check_strings(data, ("message", "output"), "", errors)
     if "images" in data:
         check_images(data["images"], "images", errors)
     tests = data.get("tests", [])
     if not isinstance(tests, list):
         return errors + ["tests is not a list"]
-    for i, test in enumerate(tests):
-        where = f"tests[{i}]"
-        if not isinstance(test, dict):
-            errors.append(f"{where} is not an object")
-            continue
-        for key in test.keys() - TEST:
-            errors.append(f"{where}: unknown field '{key}'")
-        for key in ("name", "description", "message", "output"):
-            if key in test and not isinstance(test[key], str):
-                errors.append(f"{where}.{key} is not a string")
+    for where, test in each_test(tests, TEST, errors):
+        check_strings(test, ("name", "description", "message", "output"), where + ".", errors)
         if not test.get("name"):
             errors.append(f"{where}: no name")
         points, most = test.get("points"), test.get("max_points")
@@ -99,23 +86,5 @@ def validate(data, raw):
     return errors
 
 
-def main():
-    if len(sys.argv) < 2:
-        print(__doc__, file=sys.stderr)
-        return 2
-    bad = 0
-    for path in sys.argv[1:]:
-        try:
-            with open(path, "rb") as f:
-                raw = f.read()
-            errors = validate(json.loads(raw.decode("utf-8")), raw)
-        except (OSError, ValueError) as error:
-            errors = [str(error)]
-        for error in errors:
-            print(f"{path}: {error}")
-        bad += bool(errors)
-    return 1 if bad else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(validate, __doc__))
