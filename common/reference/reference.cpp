@@ -11,10 +11,9 @@ double luminance(const Rgb& c) {
     return contract::kLumaRed * c[0] + contract::kLumaGreen * c[1] + contract::kLumaBlue * c[2];
 }
 
-double luminance(const Rgb& c, const Settings& settings) {
-    const Rgb& w = settings.lumaWeights;
-    return w[0] * c[0] + w[1] * c[1] + w[2] * c[2];
-}
+double luminance(const Rgb& c, const Settings& settings) { return luminance(c, settings.lumaWeights); }
+
+double luminance(const Rgb& c, const Rgb& w) { return w[0] * c[0] + w[1] * c[1] + w[2] * c[2]; }
 
 double rangeMappedLogLuminance(double y, const Settings& settings) {
     const double e = settings.epsilon;
@@ -64,7 +63,7 @@ double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
 
 Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
     const double y = luminance(colour, settings);
-    if (y <= 0.0) return {0.0, 0.0, 0.0};
+    if (!(y > 0.0)) return {0.0, 0.0, 0.0};
     const double mapped = toneMapLuminance(y, sceneKey, settings);
     return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
 }
@@ -194,20 +193,94 @@ ImageF gaussianBloom(const ImageF& level0, int passes, FloatStore store, const S
     return level1;
 }
 
-Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, const Settings& settings) {
-    Image8 frame(accumulation.width, accumulation.height, 3);
-    for (int y = 0; y < accumulation.height; ++y) {
-        for (int x = 0; x < accumulation.width; ++x) {
-            Rgb c{accumulation.at(x, y, 0), accumulation.at(x, y, 1), accumulation.at(x, y, 2)};
-            if (bloomLevel != nullptr) {
-                const Rgb b = sampleBilinear(*bloomLevel, (x + 0.5) / accumulation.width, (y + 0.5) / accumulation.height);
-                for (int k = 0; k < 3; ++k) c[k] += settings.bloomWeight * b[k];
-            }
-            const Rgb mapped = toneMap(c, sceneKey, settings);
-            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = toUnorm8(mapped[k]);
-        }
+double rangeMappedLogLuminance(double y, const Settings& settings, MappedLog log) {
+    if (log == MappedLog::Natural) return rangeMappedLogLuminance(y, settings);
+    const double logEps = std::log(settings.epsilon);
+    return (std::log2(y + settings.epsilon) - logEps) / (std::log(settings.whitePoint) - logEps);
+}
+
+double keyFromMapped(double mapped, const Settings& settings, Unmap unmap) {
+    const double e = settings.epsilon;
+    const double yw = settings.whitePoint;
+    switch (unmap) {
+    case Unmap::None: return std::exp(mapped);
+    case Unmap::Log2ThenExp: return std::exp(mapped * (std::log2(yw) - std::log2(e)) + std::log2(e));
+    case Unmap::LnThenExp2: return std::exp2(mapped * (std::log(yw) - std::log(e)) + std::log(e));
+    case Unmap::Correct: break;
     }
+    return keyFromMapped(mapped, settings);
+}
+
+FrameInputs::FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel, const std::vector<ImageF>* luminanceLevels)
+    : accumulation(acc), mappedKey(key), bloom(bloomLevel), levels(luminanceLevels) {
+    if (bloom == nullptr) return;
+    bloomAt.reserve(std::size_t(acc.width) * acc.height);
+    for (int y = 0; y < acc.height; ++y)
+        for (int x = 0; x < acc.width; ++x)
+            bloomAt.push_back(sampleBilinear(*bloom, (x + 0.5) / acc.width, (y + 0.5) / acc.height));
+}
+
+namespace {
+
+// One pixel of the final pass under a variant; `sceneKey` is the Ya of the smallest level.
+Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double sceneKey, int x, int y) {
+    const ImageF& acc = in.accumulation;
+    const int w = acc.width;
+    const int h = acc.height;
+    if (variant.lowerLeftQuarter && (x >= w / 2 || y >= h / 2)) return {0.0, 0.0, 0.0}; // cleared black
+    const Settings& s = variant.settings;
+    const double scale = variant.doubledUv ? 2.0 : 1.0;
+    const double u = std::min((x + 0.5) / w * scale, 1.0);
+    const double v = std::min((y + 0.5) / h * scale, 1.0);
+    Rgb c = variant.doubledUv ? sampleBilinear(acc, u, v) : Rgb{acc.at(x, y, 0), acc.at(x, y, 1), acc.at(x, y, 2)};
+    Rgb b{0.0, 0.0, 0.0};
+    if (in.bloom != nullptr && variant.addBloom)
+        b = variant.doubledUv ? sampleBilinear(*in.bloom, u, v) : in.bloomAt[std::size_t(y) * w + x];
+    if (!variant.bloomAfterToneMap)
+        for (int k = 0; k < 3; ++k) c[k] += s.bloomWeight * b[k];
+    Rgb out = c;
+    if (variant.toneMap) {
+        const double key = variant.keyLevel >= 0
+                               ? keyFromMapped(sampleBilinear((*in.levels)[std::size_t(variant.keyLevel)], 0, u, v), s, variant.unmap)
+                               : sceneKey;
+        out = toneMap(c, key, s);
+    }
+    if (variant.bloomAfterToneMap)
+        for (int k = 0; k < 3; ++k) out[k] += s.bloomWeight * b[k];
+    return out;
+}
+
+std::vector<Rgb> colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey) {
+    std::vector<Rgb> out;
+    out.reserve(std::size_t(in.accumulation.width) * in.accumulation.height);
+    for (int y = 0; y < in.accumulation.height; ++y)
+        for (int x = 0; x < in.accumulation.width; ++x) out.push_back(frameColour(in, variant, sceneKey, x, y));
+    return out;
+}
+
+Image8 toImage8(const std::vector<Rgb>& colours, int width, int height) {
+    Image8 frame(width, height, 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = toUnorm8(colours[std::size_t(y) * width + x][k]);
     return frame;
+}
+
+} // namespace
+
+std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& variant) {
+    return colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap));
+}
+
+Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant) {
+    return toImage8(frameColours(inputs, variant), inputs.accumulation.width, inputs.accumulation.height);
+}
+
+Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, const Settings& settings) {
+    FrameVariant variant;
+    variant.settings = settings;
+    const FrameInputs inputs(accumulation, 0.0, bloomLevel);
+    return toImage8(colours(inputs, variant, sceneKey), accumulation.width, accumulation.height);
 }
 
 } // namespace t10::ref

@@ -2,13 +2,15 @@
 // mapped log luminance and scene key, the tone map operator, the bloom threshold, the 2x2
 // downsample and the five-tap importance-sampled Gaussian passes, every constant a field of
 // Settings (defaults from contract.hpp). GL-free (library t10_reference_math): the numeric tests run
-// it on buffers read back from the GPU, and t10-grade's mistake models are other Settings of it.
+// it on buffers read back from the GPU, and t10-grade's mistake models are its variants (the end of
+// this file): other Settings, and the final pass written with one of the mistakes the grader names.
 #pragma once
 #include "t10/contract.hpp"
 #include "t10/image.hpp"
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace t10::ref {
 
@@ -41,6 +43,8 @@ struct Settings {
 
 double luminance(const Rgb& c);
 double luminance(const Rgb& c, const Settings& settings);
+// With other weights: the bloom threshold's classification under a student's weights (t10-grade).
+double luminance(const Rgb& c, const Rgb& weights);
 // (log(Y + eps) - log(eps)) / (log(Yw) - log(eps)), not clamped.
 double rangeMappedLogLuminance(double y, const Settings& settings = {});
 // Inverse of the range mapping followed by exp: the key Ya from a mapped value.
@@ -54,7 +58,7 @@ double meanMappedLogLuminance(const ImageF& accumulation, bool asR16, const Sett
 double meanLogLuminance(const ImageF& accumulation);
 // Middle grey dg of step 9 from the scene key Ya: middleGrey - 2 / (2 + log10(Ya + 1)).
 double middleGrey(double sceneKey, const Settings& settings = {});
-// The tone map of steps 8-9 for a linear HDR colour and the key Ya (black stays black).
+// The tone map of steps 8-9 for a linear HDR colour and the key Ya (black, or a NaN luminance, gives black).
 Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
 // The tone map of a luminance alone: the new luminance Y' of step 9 (0 for y <= 0).
 double toneMapLuminance(double y, double sceneKey, const Settings& settings = {});
@@ -91,5 +95,52 @@ ImageF gaussianBloom(const ImageF& level0, int passes = kBlurPasses, FloatStore 
 // accumulation texel, tone map with Ya, convert to 8 bits.
 Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel = nullptr,
                   const Settings& settings = {});
+
+// --- The variants t10-grade models (grader/diagnosis/mistakes.tsv names them). -------------------
+// Each is the tutorial's formula with one thing written another way; the defaults are the
+// tutorial's, so a default variant gives what the functions above give.
+
+// How step 4's log is taken: the natural log (the tutorial's), or log2 of the luminance against the
+// natural-log bounds (the mapping's two logs in different bases).
+enum class MappedLog { Natural, Log2Luminance };
+double rangeMappedLogLuminance(double y, const Settings& settings, MappedLog log);
+
+// How the final pass turns the stored key back into Ya: the tutorial's inverse of the range mapping,
+// no inverse at all (exp of the stored value), or the inverse in the other base than the mapping's
+// (log2 to map and exp to undo it, ln to map and exp2 to undo it).
+enum class Unmap { Correct, None, Log2ThenExp, LnThenExp2 };
+double keyFromMapped(double mapped, const Settings& settings, Unmap unmap);
+
+// The final pass (steps 6-10, 19-20, 35) written the tutorial's way (the defaults) or with one of
+// the mistakes t10-grade models.
+struct FrameVariant {
+    Settings settings;
+    Unmap unmap = Unmap::Correct;
+    bool toneMap = true;          // false: the colour written without the tone map
+    bool addBloom = true;         // false: the bloom never added (Part 2 on)
+    bool bloomAfterToneMap = false;
+    bool lowerLeftQuarter = false; // the viewport left at half size: only the lower-left quarter drawn, the rest black
+    bool doubledUv = false;        // every texture read at twice its coordinate (half the inverse resolution)
+    int keyLevel = -1;             // >= 0: Ya read per pixel from this luminance level, not the smallest
+};
+
+// What the final pass reads: the accumulation, the stored (range-mapped) key of the smallest
+// luminance level, bloom level 1 (null without bloom) and, for a variant with a key level, the
+// luminance levels. Bloom level 1 at each pixel's centre is sampled once here: a fit evaluates the
+// frame hundreds of times. The images must outlive the inputs.
+struct FrameInputs {
+    explicit FrameInputs(const ImageF& accumulation, double mappedKey, const ImageF* bloomLevel = nullptr,
+                const std::vector<ImageF>* luminanceLevels = nullptr);
+    const ImageF& accumulation;
+    double mappedKey;
+    const ImageF* bloom;
+    const std::vector<ImageF>* levels;
+    std::vector<Rgb> bloomAt;
+};
+
+// Every pixel's colour under the variant before the 8-bit store, row by row (x fastest).
+std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& variant);
+// The frame under the variant, converted to 8 bits: finalFrame's result for the default variant.
+Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant);
 
 } // namespace t10::ref

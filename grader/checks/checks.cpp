@@ -1,19 +1,21 @@
 // The buffer checks of t10-grade and how they explain a failure; see checks.hpp.
 //
-// Every check compares what the submission's GPU wrote with the CPU reference of tests/numeric
-// (reference.hpp), computed from the buffers the GPU itself produced one pass earlier, so that a
+// Every check compares what the submission's GPU wrote with the CPU reference (common/reference,
+// reference.hpp), computed from the buffers the GPU itself produced one pass earlier, so that a
 // mistake shows in the check of the step that makes it and not in every later one. That is also
 // why a mistake found by one check agrees with every check that passed: each model starts from the
 // GPU's own input buffer and changes only what its own step computes.
 //
 // When a check fails, each catalogue mistake of that check is a model: the reference with one
-// setting changed (ref::Settings), fitted to the buffer (fits.hpp) or, for a mistake without a
-// value, taken as it is. A mistake is named only when its model explains the buffer within the
-// check's own tolerance; otherwise the diagnosis describes the error's shape (a constant factor, a
-// shift, nothing written, NaN, the region that differs). No closest guesses.
+// setting changed (ref::Settings) or written the mistake's way (the reference's variants:
+// ref::MappedLog, ref::Unmap, ref::FrameVariant), fitted to the buffer (fits.hpp) or, for a
+// mistake without a value, taken as it is. A mistake is named only when its model explains the
+// buffer within the check's own tolerance; otherwise the diagnosis describes the error's shape (a
+// constant factor, a shift, nothing written, NaN, the region that differs). No closest guesses.
 //
-// Adding a known mistake: a row of mistakes.tsv, a model in the check of the step it breaks, and a
-// submission that makes it (tests/make_submissions.py).
+// Adding a known mistake: a row of mistakes.tsv, its variant in common/reference when it changes
+// the tutorial's math, a model in the check of the step it breaks, and a submission that makes it
+// (tests/make_submissions.py).
 #include "checks/checks.hpp"
 
 #include "t10/compare.hpp"
@@ -49,7 +51,6 @@ constexpr int kLuminanceUnit = static_cast<int>(t10::contract::kLuminanceKeyUnit
 constexpr int kBloomUnit = static_cast<int>(t10::contract::kBloomUnit);
 constexpr ref::Rgb kRec601Weights{0.299, 0.587, 0.114};
 
-double dot(const ref::Rgb& w, const ref::Rgb& c) { return w[0] * c[0] + w[1] * c[1] + w[2] * c[2]; }
 ref::Rgb texel(const ImageF& image, int x, int y) { return {image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)}; }
 
 std::string format(double value, int precision = 4) {
@@ -204,18 +205,16 @@ std::string errorShape(const std::vector<double>& expected, const std::vector<do
 }
 
 // --- Luminance levels and the scene key (steps 3-5, 13, 15). -------------------------------------
+// A model of luminance level 0: the reference's mapping with other settings or the other log.
 struct KeyModel {
     ref::Settings settings;
-    bool log2Pass = false;
+    ref::MappedLog log = ref::MappedLog::Natural;
 };
 
 // One pixel's range-mapped log luminance as GL_R16 stores it, with the model's setting.
 double modelMapped(const ref::Rgb& colour, const KeyModel& model) {
     const ref::Settings& s = model.settings;
-    const double lum = ref::luminance(colour, s);
-    if (!model.log2Pass) return ref::toUnorm16(ref::rangeMappedLogLuminance(lum, s));
-    const double logEps = std::log(s.epsilon);
-    return ref::toUnorm16((std::log2(lum + s.epsilon) - logEps) / (std::log(s.whitePoint) - logEps));
+    return ref::toUnorm16(ref::rangeMappedLogLuminance(ref::luminance(colour, s), s, model.log));
 }
 
 // Largest difference, in R16 steps, between luminance level 0 and a model of it.
@@ -277,19 +276,9 @@ double gpuMappedKey(const t10::test::Dump& dump) {
 }
 
 // --- The final frame (steps 6-10, 19-20, 35). -----------------------------------------------------
-enum class Unmap { Correct, None, Log2ThenExp, LnThenExp2 };
-enum class Region { Whole, LowerLeftQuarter };
-
-struct FrameModel {
-    ref::Settings settings;
-    Unmap unmap = Unmap::Correct;
-    bool toneMap = true;
-    bool useBloom = true;
-    bool bloomAfter = false;
-    Region region = Region::Whole;
-    bool halfInvResolution = false; // the final pass samples at twice the texture coordinate
-    int keyLevel = -1;              // >= 0: the key read per pixel from this luminance level
-};
+// Its models are the reference's variants of the final pass (ref::FrameVariant): the tutorial's,
+// another value of one constant, or the pass written with one of the catalogue's mistakes.
+using FrameModel = ref::FrameVariant;
 
 // A catalogue mistake that is one tutorial constant set to another value: its id, the constant,
 // the range a fit searches (log-spaced) and the steps it costs; named from `firstPart` on.
@@ -327,10 +316,10 @@ std::vector<DiscreteModel> frameDiscreteModels(int part, int luminanceLevels) {
     FrameModel m;
     m.toneMap = false;
     models.push_back({"tone-map-missing", range(6, 10), m, {}});
-    for (Unmap unmap : {Unmap::None, Unmap::Log2ThenExp, Unmap::LnThenExp2}) {
+    for (ref::Unmap unmap : {ref::Unmap::None, ref::Unmap::Log2ThenExp, ref::Unmap::LnThenExp2}) {
         m = FrameModel{};
         m.unmap = unmap;
-        models.push_back({unmap == Unmap::None ? "missing-unmapping" : "log2-exp-mismatch", {9}, m, {}});
+        models.push_back({unmap == ref::Unmap::None ? "missing-unmapping" : "log2-exp-mismatch", {9}, m, {}});
     }
     m = FrameModel{};
     m.settings.lumaWeights = kRec601Weights;
@@ -342,109 +331,38 @@ std::vector<DiscreteModel> frameDiscreteModels(int part, int luminanceLevels) {
     }
     if (part >= 2) {
         m = FrameModel{};
-        m.useBloom = false;
+        m.addBloom = false;
         models.push_back({"bloom-missing", {19, 20}, m, {}});
         m = FrameModel{};
-        m.bloomAfter = true;
+        m.bloomAfterToneMap = true;
         models.push_back({"bloom-after-tonemap", {20}, m, {}});
     }
     if (part >= 3) {
         m = FrameModel{};
-        m.region = Region::LowerLeftQuarter;
+        m.lowerLeftQuarter = true;
         models.push_back({"viewport-reset", {35}, m, {}});
         m = FrameModel{};
-        m.halfInvResolution = true;
+        m.doubledUv = true;
         models.push_back({"ubo-reset", {35}, m, {}});
     }
     return models;
 }
 
-struct FrameInputs {
-    FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel, const std::vector<ImageF>* lumLevels)
-        : accumulation(acc), mappedKey(key), bloom(bloomLevel), levels(lumLevels) {
-        // The bloom each pixel reads, sampled once: the fits evaluate the frame hundreds of times.
-        if (bloom == nullptr) return;
-        bloomAt.reserve(std::size_t(acc.width) * acc.height);
-        for (int y = 0; y < acc.height; ++y)
-            for (int x = 0; x < acc.width; ++x)
-                bloomAt.push_back(ref::sampleBilinear(*bloom, (x + 0.5) / acc.width, (y + 0.5) / acc.height));
-    }
-    const ImageF& accumulation;
-    double mappedKey;                  // the GPU's smallest level
-    const ImageF* bloom;               // bloom level 1, or null (Part 1)
-    const std::vector<ImageF>* levels; // the luminance levels (key-level models only)
-    std::vector<ref::Rgb> bloomAt;     // bloom level 1 at each pixel's centre
-};
-
-double keyFor(double mapped, const FrameModel& model) {
-    const double e = model.settings.epsilon;
-    const double yw = model.settings.whitePoint;
-    switch (model.unmap) {
-    case Unmap::None: return std::exp(mapped);
-    case Unmap::Log2ThenExp: return std::exp(mapped * (std::log2(yw) - std::log2(e)) + std::log2(e));
-    case Unmap::LnThenExp2: return std::exp2(mapped * (std::log(yw) - std::log(e)) + std::log(e));
-    case Unmap::Correct: break;
-    }
-    return std::exp(mapped * (std::log(yw) - std::log(e)) + std::log(e));
-}
-
-// Calls sink(x, y, colour) with each pixel's output colour under the model (before the 8-bit store).
-template <typename Sink>
-void forEachModelPixel(const FrameInputs& in, const FrameModel& model, Sink&& sink) {
-    const ImageF& acc = in.accumulation;
-    const double globalKey = keyFor(in.mappedKey, model);
-    const int w = acc.width;
-    const int h = acc.height;
-    const double scale = model.halfInvResolution ? 2.0 : 1.0;
-    const ref::Settings& s = model.settings;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            if (model.region == Region::LowerLeftQuarter && (x >= w / 2 || y >= h / 2)) {
-                sink(x, y, ref::Rgb{0.0, 0.0, 0.0}); // cleared black
-                continue;
-            }
-            const double u = std::min((x + 0.5) / w * scale, 1.0);
-            const double v = std::min((y + 0.5) / h * scale, 1.0);
-            ref::Rgb c = model.halfInvResolution ? ref::sampleBilinear(acc, u, v) : texel(acc, x, y);
-            ref::Rgb b{0.0, 0.0, 0.0};
-            if (in.bloom != nullptr && model.useBloom)
-                b = model.halfInvResolution ? ref::sampleBilinear(*in.bloom, u, v) : in.bloomAt[std::size_t(y) * w + x];
-            if (!model.bloomAfter)
-                for (int k = 0; k < 3; ++k) c[k] += s.bloomWeight * b[k];
-            ref::Rgb out = c;
-            if (model.toneMap) {
-                const double key = model.keyLevel >= 0 ? keyFor(ref::sampleBilinear((*in.levels)[model.keyLevel], 0, u, v), model)
-                                                       : globalKey;
-                const double lum = ref::luminance(c, s);
-                const double yNew = ref::toneMapLuminance(lum, key, s);
-                for (int k = 0; k < 3; ++k) out[k] = lum > 0.0 ? c[k] * yNew / lum : 0.0;
-            }
-            if (model.bloomAfter)
-                for (int k = 0; k < 3; ++k) out[k] += s.bloomWeight * b[k];
-            sink(x, y, out);
-        }
-    }
-}
-
-Image8 modelFrame(const FrameInputs& in, const FrameModel& model) {
-    Image8 frame(in.accumulation.width, in.accumulation.height, 3);
-    forEachModelPixel(in, model, [&](int x, int y, const ref::Rgb& out) {
-        for (int k = 0; k < 3; ++k) frame.at(x, y, k) = ref::toUnorm8(out[k]);
-    });
-    return frame;
-}
+using ref::FrameInputs;
 
 // What the fits minimise: the mean distance, in 8-bit steps, from the model's unrounded output to
 // the frame. Unlike the rounded error it changes smoothly with a constant, so the search does not
 // stall on the plateaus of the 8-bit store.
 double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame) {
+    const std::vector<ref::Rgb> colours = ref::frameColours(in, model);
+    const int w = in.accumulation.width;
     double sum = 0.0;
-    forEachModelPixel(in, model, [&](int x, int y, const ref::Rgb& out) {
-        for (int k = 0; k < 3; ++k) {
-            const double d = std::abs(std::clamp(out[k], 0.0, 1.0) * 255.0 - frame.at(x, y, k));
-            sum += std::isfinite(d) ? d : 255.0;
-        }
-    });
+    for (int y = 0; y < in.accumulation.height; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int k = 0; k < 3; ++k) {
+                const double d = std::abs(std::clamp(colours[std::size_t(y) * w + x][k], 0.0, 1.0) * 255.0 - frame.at(x, y, k));
+                sum += std::isfinite(d) ? d : 255.0;
+            }
     return sum / (3.0 * in.accumulation.width * in.accumulation.height);
 }
 
@@ -492,7 +410,7 @@ int misclassified(const ImageF& accumulation, const ImageF& gpu, double threshol
     int count = 0;
     for (int y = 0; y < accumulation.height; ++y)
         for (int x = 0; x < accumulation.width; ++x) {
-            const double lum = dot(weights, texel(accumulation, x, y));
+            const double lum = ref::luminance(texel(accumulation, x, y), weights);
             const bool modelBright = lum >= threshold;
             const bool gpuBright = gpu.at(x, y, 0) + gpu.at(x, y, 1) + gpu.at(x, y, 2) > 0.0f;
             // Only a pixel within float rounding of the threshold may land on either side.
@@ -512,7 +430,7 @@ ThresholdInterval thresholdInterval(const ImageF& accumulation, const ImageF& gp
     ThresholdInterval interval;
     for (int y = 0; y < accumulation.height; ++y)
         for (int x = 0; x < accumulation.width; ++x) {
-            const double lum = dot(weights, texel(accumulation, x, y));
+            const double lum = ref::luminance(texel(accumulation, x, y), weights);
             const bool gpuBright = gpu.at(x, y, 0) + gpu.at(x, y, 1) + gpu.at(x, y, 2) > 0.0f;
             if (gpuBright) interval.high = std::min(interval.high, lum);
             else interval.low = std::max(interval.low, lum);
@@ -793,14 +711,14 @@ void fitFrameConstantJointly(const ModelParameter& p, const std::vector<Check*>&
     const Fit fit = refineFrameFit(rough.value, [&](double v) {
         double sum = 0.0;
         for (const auto& c : cases) {
-            const auto e = t10::test::byteError(modelFrame(*c->inputs, model(v)), c->run.dump.frame);
+            const auto e = t10::test::byteError(ref::finalFrame(*c->inputs, model(v)), c->run.dump.frame);
             sum += e.mean + e.fractionOverOne;
         }
         return sum;
     });
     bool everyCase = true;
     for (const auto& c : cases)
-        everyCase = everyCase && frameWithin(t10::test::byteError(modelFrame(*c->inputs, model(fit.value)), c->run.dump.frame));
+        everyCase = everyCase && frameWithin(t10::test::byteError(ref::finalFrame(*c->inputs, model(fit.value)), c->run.dump.frame));
     for (Check* c : frames) {
         drop(*c, p.id);
         rebuildDiagnosis(*c);
@@ -1028,7 +946,7 @@ void nameLogLuminanceMistakes(CaseState& state, const ImageF& level0, Check& che
         if (fit.error <= kLogLuminanceSteps) name(check, p.id, p.steps, {fit.value});
     }
     KeyModel log2Pass;
-    log2Pass.log2Pass = true;
+    log2Pass.log = ref::MappedLog::Log2Luminance;
     if (worstLuminanceSteps(level0, acc, log2Pass) <= kLogLuminanceSteps) name(check, "log2-exp-mismatch", {4});
 }
 
@@ -1317,7 +1235,7 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
     std::vector<ImageF> levels;
     for (int l = 0; l < state.dump.luminanceLevels(); ++l) levels.push_back(state.dump.level(kLuminanceUnit, l));
     const FrameInputs withLevels{state.acc, state.gpuKey, bloom, &levels};
-    const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(modelFrame(withLevels, m), state.dump.frame); };
+    const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(ref::finalFrame(withLevels, m), state.dump.frame); };
     for (const DiscreteModel& d : frameDiscreteModels(state.part, int(levels.size())))
         if (!names(check, d.id) && frameWithin(frameError(d.model))) name(check, d.id, d.steps, d.value);
     for (const ModelParameter& p : kFrameParameters) {
@@ -1339,7 +1257,7 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
 bool frameCheck(CaseState& state, const CheckSpec& spec, Check& check) {
     const ImageF* bloom = state.part >= 2 ? &state.bloom1 : nullptr;
     const FrameInputs inputs{state.acc, state.gpuKey, bloom, nullptr};
-    const Image8 expected = modelFrame(inputs, FrameModel{});
+    const Image8 expected = ref::finalFrame(inputs, FrameModel{});
     const auto error = t10::test::byteError(expected, state.dump.frame);
     check.passed = frameWithin(error);
     check.measured = "largest error " + std::to_string(error.max) + " 8-bit steps, mean " + format(error.mean) +
