@@ -68,12 +68,15 @@ deps:
 # The tests are configured in only when Catch2 is installed (`make test` installs it), so that `make run`
 # needs none of the test packages; a build configured without them gains them when they arrive.
 TESTS_ON = $(shell dpkg-query -W -f='$${Status}' catch2 2>/dev/null | grep -q 'ok installed' && echo ON || echo OFF)
-# CONFIGURE_FLAGS: more -D settings for the first configure (make grader leaves extras/ out).
+# CONFIGURE_FLAGS: more -D settings for the first configure (make grader leaves extras/ out); any other
+# target given a build that make grader configured puts extras/ back.
 CONFIGURE_FLAGS :=
 configure: deps
 	@if [ ! -f $(BUILD)/build.ninja ]; then cmake --preset $(PRESET) -DT10_BUILD_TESTS=$(TESTS_ON) $(CONFIGURE_FLAGS); \
 	elif [ "$(TESTS_ON)" = ON ] && grep -qx 'T10_BUILD_TESTS:BOOL=OFF' $(BUILD)/CMakeCache.txt; then \
 	    echo "Catch2 is installed now: configuring $(BUILD)/ with the tests"; cmake $(BUILD) -DT10_BUILD_TESTS=ON; fi
+	@if [ -z "$(CONFIGURE_FLAGS)" ] && grep -qx 'T10_BUILD_EXTRAS:BOOL=OFF' $(BUILD)/CMakeCache.txt; then \
+	    echo "configuring $(BUILD)/ with extras/ (make grader left it out)"; cmake $(BUILD) -DT10_BUILD_EXTRAS=ON; fi
 
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
