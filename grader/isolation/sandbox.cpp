@@ -105,6 +105,19 @@ std::vector<std::string> systemMountArgs() {
     return args;
 }
 
+// The step's environment: run.env, and in an AddressSanitizer build, where the address-space limit
+// cannot be set (see execChild), the memory limit as the sanitizer's own: an allocation over it
+// returns null and a process whose resident memory passes it is stopped, as RLIMIT_AS would. Only
+// sanitized programs (a submission built by the sanitized kit) read ASAN_OPTIONS.
+std::vector<std::string> stepEnvironment(const SandboxRun& run) {
+    std::vector<std::string> env = run.env;
+#ifdef __SANITIZE_ADDRESS__
+    const std::string mib = std::to_string(run.limits.memoryMiB);
+    env.push_back("ASAN_OPTIONS=allocator_may_return_null=1:max_allocation_size_mb=" + mib + ":hard_rss_limit_mb=" + mib);
+#endif
+    return env;
+}
+
 std::vector<std::string> bwrapOptions(const SandboxRun& run) {
     std::vector<std::string> args{"--unshare-all", "--die-with-parent", "--new-session", "--cap-drop", "ALL",
                                   "--clearenv", "--uid", std::to_string(kInsideUid), "--gid", std::to_string(kInsideUid),
@@ -115,7 +128,7 @@ std::vector<std::string> bwrapOptions(const SandboxRun& run) {
                              std::to_string(run.limits.tmpMiB * 1024 * 1024), "--tmpfs", "/tmp"});
     for (const Mount& mount : run.mounts)
         args.insert(args.end(), {mount.writable ? "--bind" : "--ro-bind", mount.host, mount.inside});
-    for (const std::string& variable : run.env) {
+    for (const std::string& variable : stepEnvironment(run)) {
         const auto equals = variable.find('=');
         args.insert(args.end(), {"--setenv", variable.substr(0, equals), variable.substr(equals + 1)});
     }
@@ -256,7 +269,7 @@ void planChild(const SandboxRun& run, const std::vector<std::string>& argv, cons
     }
     for (std::string& arg : plan.command) plan.args.push_back(arg.data());
     plan.args.push_back(nullptr);
-    plan.envCopy = run.env;
+    plan.envCopy = stepEnvironment(run);
     for (std::string& variable : plan.envCopy) plan.env.push_back(variable.data());
     plan.env.push_back(nullptr);
     plan.program = namespaces ? kBwrap : plan.command.front();
@@ -288,7 +301,8 @@ void planChild(const SandboxRun& run, const std::vector<std::string>& argv, cons
     ::setsid(); // its own session and process group: no terminal, killed as a group
     setLimit(RLIMIT_CPU, static_cast<rlim_t>(run.limits.cpuSeconds));
 #ifndef __SANITIZE_ADDRESS__
-    // Not in an AddressSanitizer build: sanitized programs reserve terabytes of shadow memory.
+    // Not in an AddressSanitizer build: sanitized programs reserve terabytes of shadow memory (the
+    // limit reaches them through ASAN_OPTIONS instead: stepEnvironment).
     setLimit(RLIMIT_AS, static_cast<rlim_t>(run.limits.memoryMiB) * 1024 * 1024);
 #endif
     setLimit(RLIMIT_CORE, 0);
