@@ -1,33 +1,25 @@
 # Tests of the platforms' results (formats.*), the class index (class_index.*) and the packaged scripts
 # (platforms/), included from grader/CMakeLists.txt beside tests/tests.cmake, whose test submissions and
-# settings (GRADE_*) they reuse. One batch of four part 3 submissions (correct, mistaken, not building,
-# crashing) is graded with every --format; each format is validated against its platform's contract by
-# tests/platforms/validate_*.py, and each validator is shown to reject broken results. The packaged
-# Gradescope and PrairieLearn scripts run end to end in a scratch root, reusing this build and the
-# grader's cache, so the whole set takes about a minute of CPU.
+# settings (GRADE_*) they reuse. The part 3 batch of tests.cmake is graded with every --format; four of
+# its submissions (correct, mistaken, not building, crashing) have each format validated against its
+# platform's contract by tests/platforms/validate_*.py, and each validator is shown to reject broken
+# results. The packaged Gradescope and PrairieLearn scripts run end to end in a scratch root, reusing
+# this build and the grader's cache.
 set(PLATFORM_TESTS ${GRADE_TESTS}/platforms)
 set(PLATFORM_OUT ${GRADE_OUT}/platforms)
 set(PLATFORM_SUBMISSIONS reference3 weight no_compile crash)
-set(folders "")
-foreach(name IN LISTS PLATFORM_SUBMISSIONS)
-    list(APPEND folders ${GRADE_SUBMISSIONS}/part3/${name})
-endforeach()
-add_test(NAME "grade platforms: part 3 batch with every --format"
-         COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_TIMEOUT} --format gradescope --format prairielearn
-                 --format classroom --fill-from-reference all --report ${PLATFORM_OUT}/batch ${folders})
-set_tests_properties("grade platforms: part 3 batch with every --format" PROPERTIES COST 500
-                     FIXTURES_SETUP grade_platforms FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+set(PLATFORM_BATCH ${GRADE_REPORTS}/part3)
 
 set(PLATFORM_CHECK ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${Python3_EXECUTABLE} ${PLATFORM_TESTS}/check_platforms.py)
 foreach(format gradescope prairielearn classroom)
     add_test(NAME "grade platforms: ${format} results valid for a correct, a mistaken, a non-building and a crashing submission"
-             COMMAND ${PLATFORM_CHECK} results ${format} ${PLATFORM_OUT}/batch ${PLATFORM_SUBMISSIONS})
+             COMMAND ${PLATFORM_CHECK} results ${format} ${PLATFORM_BATCH} ${PLATFORM_SUBMISSIONS})
     set_tests_properties("grade platforms: ${format} results valid for a correct, a mistaken, a non-building and a crashing submission"
-                         PROPERTIES FIXTURES_REQUIRED grade_platforms SKIP_RETURN_CODE 77)
+                         PROPERTIES FIXTURES_REQUIRED grade_part3 SKIP_RETURN_CODE 77)
 endforeach()
 add_test(NAME "grade platforms: the validators reject broken results"
-         COMMAND ${PLATFORM_CHECK} rejects ${PLATFORM_OUT}/batch/weight)
-set_tests_properties("grade platforms: the validators reject broken results" PROPERTIES FIXTURES_REQUIRED grade_platforms
+         COMMAND ${PLATFORM_CHECK} rejects ${PLATFORM_BATCH}/weight)
+set_tests_properties("grade platforms: the validators reject broken results" PROPERTIES FIXTURES_REQUIRED grade_part3
                      SKIP_RETURN_CODE 77)
 
 # The grader's own failure (a cache folder it cannot create): exit 1, and every platform still gets a
