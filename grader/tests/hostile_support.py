@@ -1,6 +1,7 @@
-"""What the hostile suites (hostile/hostile.py, tga/tga_loaders.py) share: the skip they report to
-ctest, the check for a checkout the uid fallback refuses, and a server on 127.0.0.1 that records every
-connection (the network attack connects to it; a sandbox that contains the attack leaves it empty)."""
+"""Helpers of the grader's sandboxed suites (hostile/hostile.py with hostile/tga_attacks.py, and
+tga/tga_loaders.py): the skip they report to ctest, the check for a checkout the uid fallback refuses,
+and a server on 127.0.0.1 that records every connection (the network attacks connect to it; a sandbox
+that contains them leaves it empty)."""
 import os
 import socket
 import stat

@@ -136,22 +136,14 @@ foreach(case
 endforeach()
 
 # --- t10-grade-tga grades a loader's source (tga.cpp) in the sandbox (tests/tga/tga_loaders.py writes
-# the submissions from common/content/src/tga.cpp). The project's loader scores 100 and each mutant
-# (flip, swap, crash, hang, accept) fails the case it breaks with its verdict: shown to fail with a
-# grader that counts every case as passed (each mutant "expected below 100 (got 100)").
+# the submissions from common/content/src/tga.cpp; the cheat and the attacks are in the hostile suite
+# below). The project's loader scores 100 and each mutant (flip, swap, crash, hang, accept) fails the
+# case it breaks with its verdict: shown to fail with a grader that counts every case as passed (each
+# mutant "expected below 100 (got 100)").
 set(GRADE_TGA_LOADERS ${Python3_EXECUTABLE} ${GRADE_TESTS}/tga/tga_loaders.py)
 add_test(NAME "grade tga: the project's loader scores 100, each mutant fails with its verdict"
          COMMAND ${GRADE_TGA_LOADERS} mutants ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${GRADE_OUT}/tga-mutants)
 set_tests_properties("grade tga: the project's loader scores 100, each mutant fails with its verdict" PROPERTIES SKIP_RETURN_CODE 77)
-# The cheat (decodes the PNG beside its input: 100 with the command mode before issue 29) passes no
-# valid case, and the attacks are contained: shown to fail with the reference PNG copied beside the
-# input in the case's folder (the cheat passes all 18 valid cases, read_reference reads it).
-foreach(isolation namespaces uid)
-    add_test(NAME "grade tga: the cheat and hostile loaders are contained (${isolation})"
-             COMMAND ${GRADE_TGA_LOADERS} ${isolation} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade-tga
-                     ${GRADE_OUT}/tga-hostile-${isolation})
-    set_tests_properties("grade tga: the cheat and hostile loaders are contained (${isolation})" PROPERTIES SKIP_RETURN_CODE 77)
-endforeach()
 foreach(case "2;the command mode is gone;tga2png {in} {out}" "2;/nonexistent-loader: not a folder;/nonexistent-loader"
              "2;--timeout 0: expected 1 to 600 seconds;--timeout;0;${PROJECT_SOURCE_DIR}")
     list(POP_FRONT case code regex)
@@ -173,13 +165,18 @@ add_test(NAME "grade: a checkout inside a 0700 folder, as root and as its owner"
                  ${GRADE_OUT}/private-checkout)
 set_tests_properties("grade: a checkout inside a 0700 folder, as root and as its owner" PROPERTIES SKIP_RETURN_CODE 77)
 
-# --- Hostile submissions (issue 19): each attack on the grader is contained, honest submissions
-# graded beside them keep 100. Under namespaces where bwrap works, and under the uid fallback where
-# the tests run as root; each skips (77) saying why elsewhere. One at a time: they count processes.
+# --- Hostile submissions (issues 19 and 29): each attack on the grader is contained, honest submissions
+# graded beside them keep 100; the same for TGA loaders (hostile/tga_attacks.py), graded at the same
+# time: the cheat (decodes the PNG beside its input: 100 with the command mode before issue 29) passes
+# no valid case, and each attack is contained with its loader's 100 kept. Under namespaces where bwrap
+# works, and under the uid fallback where the tests run as root; each skips (77) saying why elsewhere.
+# The TGA part was shown to fail with the reference PNG copied beside the input in the case's folder
+# (the cheat passes all 18 valid cases, read_reference reads it). One at a time: they count processes.
 foreach(isolation namespaces uid)
     add_test(NAME "grade: hostile submissions are contained (${isolation})"
              COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/hostile/hostile.py ${isolation} ${PROJECT_SOURCE_DIR}
-                     ${PROJECT_BINARY_DIR}/bin/t10-grade ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/hostile-${isolation})
+                     ${PROJECT_BINARY_DIR}/bin/t10-grade ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${T10_GRADE_VENV}/bin/flip
+                     ${GRADE_OUT}/hostile-${isolation})
     set_tests_properties("grade: hostile submissions are contained (${isolation})" PROPERTIES
                          SKIP_RETURN_CODE 77 RESOURCE_LOCK grade_hostile COST 900 TIMEOUT 600)
 endforeach()
