@@ -60,6 +60,10 @@ endforeach()
 # played by stand-ins for apt-get, apt-cache, bwrap and cmake, so nothing is installed.
 add_test(NAME "grade platforms: install_grader.sh builds on Ubuntu 22.04 (CMake from PyPI), refuses an older release"
          COMMAND ${PLATFORM_TESTS}/install_check.sh ${PROJECT_SOURCE_DIR} ${PLATFORM_OUT}/install-check)
+# The OpenEXR package that install_grader.sh lets through on Ubuntu 22.04 (2.5, OpenEXR::IlmImf) is the
+# one cmake/T10OpenEXR.cmake takes: played by stand-in config packages of 3, 2.5 and a too old 2.3.
+add_test(NAME "grade platforms: cmake/T10OpenEXR.cmake takes OpenEXR 3 and 2.5 (Ubuntu 22.04), refuses 2.3"
+         COMMAND ${PLATFORM_TESTS}/openexr_package_check.sh ${PROJECT_SOURCE_DIR} ${PLATFORM_OUT}/openexr-package-check)
 
 # The students' GitHub Classroom workflow parses as YAML and has the shape the Classroom reporter needs;
 # the grading step's outputs, run through GitHub Classroom's released reporter, show what a student reads.
