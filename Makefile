@@ -97,8 +97,12 @@ run: build
 	    done; \
 	fi
 
-test: PACKAGES += $(TEST_PACKAGES)
-test: build
+# make test installs every package in one apt-get run (python3-venv for FLIP's venv too), then makes
+# FLIP's venv (pip, mostly waiting on PyPI) while the C++ builds, then runs every test.
+test: PACKAGES += $(TEST_PACKAGES) python3-venv
+test: deps
+	@$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \
+	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; exit $$built
 	cd $(BUILD) && ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 bless: build
@@ -238,11 +242,10 @@ grade: grade-args build grade-deps
 bench-grader: build grade-deps
 	python3 grader/bench_grader.py $(BIN)/t10-grade grader/tests/make_submissions.py $(CURDIR) $(OUT)/bench-grader $(GRADE_JOBS)
 
-# The grader's tests need FLIP too; without it (no network for PyPI) they report themselves skipped.
+# The grader's tests need FLIP too (make test makes it); without it (no network for PyPI) they report
+# themselves skipped.
 grade-deps-or-skip:
 	@$(MAKE) --no-print-directory grade-deps || echo "warning: FLIP could not be installed: the grader's tests will be skipped"
-
-test: grade-deps-or-skip
 
 # Students (tools/check/): `make student PART=N` starts student/partN/ (Part 1 from
 # tutorial10_part0_start/, Part N from the student's own part(N-1) or else the reference of Part N-1);
