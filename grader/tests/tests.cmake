@@ -42,7 +42,10 @@ foreach(part 1 2 3)
     add_test(NAME "grade: part ${part} batch with --jobs 2"
              COMMAND ${GRADE_RUN} --part ${part} --jobs 2 --timeout ${GRADE_TIMEOUT} --fill-from-reference all ${GRADE_FORMATS${part}}
                      --report ${GRADE_REPORTS}/part${part} ${folders})
-    # COST: ctest starts the long batches first, beside the many short tests.
+    # COST: ctest starts the long batches first, beside the many short tests (elsewhere: about ten times
+    # a test's seconds, for a fresh clone, where ctest has no timing of an earlier run). Every later test that grades
+    # a part in the default cache (build/grade-cache) requires its batch (grade_partN): the batch renders
+    # and builds the reference once, where tests started beside it would each do it again.
     set_tests_properties("grade: part ${part} batch with --jobs 2" PROPERTIES COST 1000
                          FIXTURES_SETUP grade_part${part} FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
     add_test(NAME "grade: part ${part} reports, scores and diagnoses"
@@ -55,7 +58,7 @@ add_test(NAME "grade: an endless loop is stopped at the time limit"
          COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_LOOP_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/loop
                  ${GRADE_SUBMISSIONS}/part3/loop)
 set_tests_properties("grade: an endless loop is stopped at the time limit" PROPERTIES
-                     FIXTURES_SETUP grade_loop FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                     FIXTURES_SETUP grade_loop FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77)
 add_test(NAME "grade: the endless loop's report says timeout"
          COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/loop loop)
 set_tests_properties("grade: the endless loop's report says timeout" PROPERTIES FIXTURES_REQUIRED grade_loop
@@ -79,7 +82,7 @@ endforeach()
 add_test(NAME "grade: fitted parameters batch with --jobs 2"
          COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/fitted ${folders})
 set_tests_properties("grade: fitted parameters batch with --jobs 2" PROPERTIES COST 1000
-                     FIXTURES_SETUP grade_fitted FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                     FIXTURES_SETUP grade_fitted FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77)
 add_test(NAME "grade: fitted parameters named with their measured values"
          COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/fitted ${GRADE_FITTED})
 set_tests_properties("grade: fitted parameters named with their measured values" PROPERTIES
@@ -111,7 +114,7 @@ foreach(name weight viewport_reset no_compile)
              COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/alone-${name}
                      ${GRADE_SUBMISSIONS}/part3/${name})
     set_tests_properties("grade: ${name} alone" PROPERTIES
-                         FIXTURES_SETUP grade_alone FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                         FIXTURES_SETUP grade_alone FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77)
     list(APPEND single_gradebooks ${GRADE_REPORTS}/alone-${name}/gradebook.csv)
 endforeach()
 add_test(NAME "grade: --jobs 2 gives the same gradebook as one by one"
@@ -143,7 +146,8 @@ endforeach()
 set(GRADE_TGA_LOADERS ${Python3_EXECUTABLE} ${GRADE_TESTS}/tga/tga_loaders.py)
 add_test(NAME "grade tga: the project's loader scores 100, each mutant fails with its verdict"
          COMMAND ${GRADE_TGA_LOADERS} mutants ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${GRADE_OUT}/tga-mutants)
-set_tests_properties("grade tga: the project's loader scores 100, each mutant fails with its verdict" PROPERTIES SKIP_RETURN_CODE 77)
+set_tests_properties("grade tga: the project's loader scores 100, each mutant fails with its verdict" PROPERTIES
+                     SKIP_RETURN_CODE 77 COST 110)
 foreach(case "2;the command mode is gone;tga2png {in} {out}" "2;/nonexistent-loader: not a folder;/nonexistent-loader"
              "2;--timeout 0: expected 1 to 600 seconds;--timeout;0;${PROJECT_SOURCE_DIR}")
     list(POP_FRONT case code regex)
@@ -156,14 +160,14 @@ add_test(NAME "grade: submission files listed, empty and incomplete submissions 
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/inputs_check.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/bin/t10-grade
                  ${T10_GRADE_VENV}/bin/flip ${GRADE_OUT}/inputs)
 set_tests_properties("grade: submission files listed, empty and incomplete submissions get their status" PROPERTIES
-                     SKIP_RETURN_CODE 77)
+                     FIXTURES_REQUIRED grade_part1 SKIP_RETURN_CODE 77)
 
 # A checkout inside a 0700 folder (issue 29): as root the job uids cannot enter it; graded 100 with the
 # namespaces isolation (staged copies), one line and grader-error with uid, and as the owning user.
 add_test(NAME "grade: a checkout inside a 0700 folder, as root and as its owner"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/private_checkout.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
                  ${GRADE_OUT}/private-checkout)
-set_tests_properties("grade: a checkout inside a 0700 folder, as root and as its owner" PROPERTIES SKIP_RETURN_CODE 77)
+set_tests_properties("grade: a checkout inside a 0700 folder, as root and as its owner" PROPERTIES SKIP_RETURN_CODE 77 COST 85)
 
 # --- Hostile submissions (issues 19 and 29): each attack on the grader is contained, honest submissions
 # graded beside them keep 100; the same for TGA loaders (hostile/tga_attacks.py), graded at the same
@@ -180,3 +184,7 @@ foreach(isolation namespaces uid)
     set_tests_properties("grade: hostile submissions are contained (${isolation})" PROPERTIES
                          SKIP_RETURN_CODE 77 RESOURCE_LOCK grade_hostile COST 900 TIMEOUT 600)
 endforeach()
+# uid after namespaces: ctest starts a test others depend on before the rest, so the two (one at a time,
+# about 35 s each) start early instead of last.
+set_tests_properties("grade: hostile submissions are contained (uid)" PROPERTIES
+                     DEPENDS "grade: hostile submissions are contained (namespaces)")

@@ -37,14 +37,14 @@ foreach(platform gradescope prairielearn)
                      ${platform} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR} ${GRADE_SUBMISSIONS}/part3/weight ${PLATFORM_OUT}/${platform})
     # The test submission (weight) holds only the shader its mistake changes: the rest from the reference.
     set_tests_properties("grade platforms: ${platform} scripts end to end in a scratch root" PROPERTIES
-                         FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77 ENVIRONMENT "T10_FILL_FROM_REFERENCE=all")
+                         FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77 ENVIRONMENT "T10_FILL_FROM_REFERENCE=all" COST 40)
 endforeach()
 
 add_test(NAME "grade platforms: a class named from a path component or a roster, its index and LMS CSV"
          COMMAND ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${Python3_EXECUTABLE} ${PLATFORM_TESTS}/check_class.py
                  ${PROJECT_BINARY_DIR}/bin/t10-grade ${GRADE_SUBMISSIONS} ${PLATFORM_OUT}/class)
 set_tests_properties("grade platforms: a class named from a path component or a roster, its index and LMS CSV" PROPERTIES
-                     FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                     FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77 COST 80)
 
 # Usage: --format and --name-from refuse what they cannot do.
 foreach(case
@@ -73,4 +73,4 @@ add_test(NAME "grade platforms: the Classroom workflow's grading step merges par
          COMMAND ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${Python3_EXECUTABLE} ${PLATFORM_TESTS}/check_workflow.py
                  grade ${PROJECT_BINARY_DIR}/bin/t10-grade ${GRADE_SUBMISSIONS} ${PLATFORM_OUT}/workflow)
 set_tests_properties("grade platforms: the Classroom workflow's grading step merges parts, writes the job summary" PROPERTIES
-                     FIXTURES_REQUIRED grade_submissions SKIP_RETURN_CODE 77)
+                     FIXTURES_REQUIRED "grade_submissions;grade_part1;grade_part3" SKIP_RETURN_CODE 77 COST 40)
