@@ -204,7 +204,22 @@ std::string errorShape(const std::vector<double>& expected, const std::vector<do
     return "";
 }
 
+// A catalogue mistake that is one tutorial constant set to another value: its id, the constant,
+// the range a fit searches (log-spaced) and the steps it costs; named from `firstPart` on.
+struct ModelParameter {
+    const char* id;
+    double ref::Settings::*field;
+    double low, high;
+    std::vector<int> steps;
+    int firstPart;
+};
+
 // --- Luminance levels and the scene key (steps 3-5, 13, 15). -------------------------------------
+// Luminance level 0's one-constant mistakes (step 4's epsilon, step 5's white point), each fitted
+// to level 0 by nameLogLuminanceMistakes.
+const ModelParameter kLogLuminanceParameters[] = {{"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, {4}, 1},
+                                                  {"white-point", &ref::Settings::whitePoint, 0.02, 20.0, {5}, 1}};
+
 // A model of luminance level 0: the reference's mapping with other settings or the other log.
 struct KeyModel {
     ref::Settings settings;
@@ -279,16 +294,6 @@ double gpuMappedKey(const t10::test::Dump& dump) {
 // Its models are the reference's variants of the final pass (ref::FrameVariant): the tutorial's,
 // another value of one constant, or the pass written with one of the catalogue's mistakes.
 using FrameModel = ref::FrameVariant;
-
-// A catalogue mistake that is one tutorial constant set to another value: its id, the constant,
-// the range a fit searches (log-spaced) and the steps it costs; named from `firstPart` on.
-struct ModelParameter {
-    const char* id;
-    double ref::Settings::*field;
-    double low, high;
-    std::vector<int> steps;
-    int firstPart;
-};
 
 // The frame's one-constant mistakes: the frame check fits each to one case, crossCheckCases to
 // every case whose frame failed at once.
@@ -934,9 +939,7 @@ void nameLogLuminanceMistakes(CaseState& state, const ImageF& level0, Check& che
             name(check, "luminance-weights", {3}, {(*w)[0], (*w)[1], (*w)[2]});
         }
     }
-    const ModelParameter parameters[] = {{"epsilon", &ref::Settings::epsilon, 1e-20, 1e-1, {4}, 1},
-                                         {"white-point", &ref::Settings::whitePoint, 0.02, 20.0, {5}, 1}};
-    for (const ModelParameter& p : parameters) {
+    for (const ModelParameter& p : kLogLuminanceParameters) {
         const auto model = [&](double v) {
             KeyModel m;
             m.settings.*(p.field) = v;
