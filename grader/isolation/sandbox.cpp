@@ -218,6 +218,28 @@ void killAllOfUid(uid_t uid) {
     }
 }
 
+namespace {
+
+// The first line of bwrap --version ("bubblewrap 0.6.1"), or "bubblewrap (its version unknown)".
+std::string bwrapVersion() {
+    char name[] = "/tmp/t10-grade-probe.XXXXXX";
+    const int fd = ::mkstemp(name);
+    if (fd < 0) return "bubblewrap (its version unknown)";
+    ::close(fd);
+    SandboxRun run; // isolation none: bwrap itself, asked only its version
+    run.limits.wallSeconds = 10;
+    std::string version;
+    try {
+        const RunResult result = runSandboxed(run, {kBwrap, "--version"}, name);
+        if (result.ok()) version = result.output.substr(0, result.output.find('\n'));
+    } catch (const Error&) {
+    }
+    ::unlink(name);
+    return version.empty() ? "bubblewrap (its version unknown)" : version;
+}
+
+} // namespace
+
 std::string probeNamespaces(uid_t uid) {
     if (::access(kBwrap, X_OK) != 0) return std::string(kBwrap) + ": " + std::strerror(errno) + " (install bubblewrap)";
     SandboxRun run;
@@ -237,6 +259,14 @@ std::string probeNamespaces(uid_t uid) {
     }
     ::unlink(name);
     if (result.ok()) return "";
+    // bubblewrap before 0.8 knows no --size (0.4 no --clearenv either): the namespaces are there, the
+    // program is too old for the sandbox's options. Say so rather than blame the kernel.
+    const std::size_t unknown = result.output.find("Unknown option");
+    if (unknown != std::string::npos) {
+        const std::string what = result.output.substr(unknown, result.output.find('\n', unknown) - unknown);
+        return bwrapVersion() + " is too old for the sandbox (bwrap: " + what +
+               "): namespaces isolation needs bubblewrap 0.8 or later";
+    }
     return "bwrap " + result.describe() + ": " + result.output;
 }
 
@@ -454,7 +484,7 @@ Isolation chooseIsolation(const std::string& asked, uid_t uid, const std::string
         throw Error("no sandbox can be had here: bubblewrap fails (" + why + ") and the uid fallback needs root. "
                     "Refusing to run student code; --no-sandbox runs it unprotected (unsafe)");
     }
-    log << program << ": warning: no user namespaces (" << why << "): falling back to one uid per job\n";
+    log << program << ": warning: no namespaces sandbox here (" << why << "): falling back to one uid per job\n";
     return Isolation::Uid;
 }
 
