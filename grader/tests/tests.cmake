@@ -32,6 +32,13 @@ set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weig
     no_compile shader_error shader_bytes crash)
 set(GRADE_PART1 reference1 shaders1 equivalent1 p1_steps_missing p1_one_constant)
 set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias)
+# A sanitized build's submissions are built sanitized too: check_reports.py expects UBSan's report for
+# the crash submission there.
+if(T10_SANITIZE)
+    set(GRADE_SANITIZED 1)
+else()
+    set(GRADE_SANITIZED 0)
+endif()
 # Part 3's batch also writes every platform's result (platforms.cmake checks them).
 set(GRADE_FORMATS3 --format gradescope --format prairielearn --format classroom)
 foreach(part 1 2 3)
@@ -51,7 +58,7 @@ foreach(part 1 2 3)
     add_test(NAME "grade: part ${part} reports, scores and diagnoses"
              COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/part${part} ${GRADE_PART${part}})
     set_tests_properties("grade: part ${part} reports, scores and diagnoses" PROPERTIES FIXTURES_REQUIRED grade_part${part}
-                         SKIP_RETURN_CODE 77)
+                         SKIP_RETURN_CODE 77 ENVIRONMENT "T10_GRADE_SANITIZED=${GRADE_SANITIZED}")
 endforeach()
 
 add_test(NAME "grade: an endless loop is stopped at the time limit"
