@@ -4,8 +4,8 @@
 // A submission is a folder with any of Tutorial10.cpp and the part's shaders. It is copied first, as
 // hostile input, into a private folder (submission_files.hpp), where the reference files the
 // instructor lets come from the reference are added. Every step the student controls (the compiler,
-// each render) runs in a sandbox (sandbox.hpp); its outputs are read afterwards as hostile files.
-// Its host code is built against common/ in a build folder of its own,
+// each render) runs in a sandbox (sandbox.hpp); its outputs are read afterwards as hostile files
+// (capture.hpp). Its host code is built against common/ in a build folder of its own (build.hpp),
 // then it renders four cases under limits (a power-of-two size with one camera, a
 // non-power-of-two size with another, and two synthetic inputs: black pixels next to pixels far
 // above the white point, and one hot pixel), and checks.hpp compares every buffer with the CPU
@@ -14,6 +14,8 @@
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
 // index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
 // report, 1 when the grader failed, 2 on bad usage.
+#include "build/build.hpp"
+#include "capture/capture.hpp"
 #include "checks/checks.hpp"
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
@@ -21,6 +23,7 @@
 #include "isolation/options.hpp"
 #include "isolation/run_limited.hpp"
 #include "isolation/sandbox.hpp"
+#include "intake/staging.hpp"
 #include "intake/submission_files.hpp"
 
 #include "t10/error.hpp"
@@ -28,7 +31,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -41,7 +43,6 @@
 #include <set>
 #include <sstream>
 #include <cstring>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <thread>
 #include <unistd.h>
@@ -263,12 +264,6 @@ Config parse(int argc, char** argv) {
     return config;
 }
 
-std::string readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path + ": cannot open");
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
 std::string tail(const std::string& text, std::size_t lines) {
     std::size_t pos = text.size();
     for (std::size_t n = 0; n <= lines; ++n) {
@@ -277,266 +272,6 @@ std::string tail(const std::string& text, std::size_t lines) {
         if (pos == std::string::npos) return text;
     }
     return text.substr(pos + 1);
-}
-
-// A linear scan of shader text (no backtracking regex over student input): the position of `words`
-// at or after `from`, where each word is a whole identifier or one punctuation character, separated
-// by optional whitespace; a word of "*" is any identifier (its text is put in `captured`).
-bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
-std::size_t findTokens(const std::string& text, const std::vector<std::string>& words, std::size_t& end,
-                       std::vector<std::string>& captured) {
-    for (std::size_t start = 0; start < text.size(); ++start) {
-        if (start > 0 && isWordChar(text[start - 1])) continue;
-        std::size_t at = start;
-        captured.clear();
-        bool matched = true;
-        for (std::size_t w = 0; w < words.size() && matched; ++w) {
-            if (w > 0) {
-                while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
-            }
-            const std::string& word = words[w];
-            if (word == "*") {
-                const std::size_t first = at;
-                while (at < text.size() && isWordChar(text[at])) ++at;
-                matched = at > first;
-                if (matched) captured.push_back(text.substr(first, at - first));
-            } else if (text.compare(at, word.size(), word) == 0) {
-                at += word.size();
-                matched = !isWordChar(word.back()) || at >= text.size() || !isWordChar(text[at]);
-            } else {
-                matched = false;
-            }
-            // Whitespace is skipped once per word and a failed attempt stops at the first mismatch, so
-            // a start position costs at most the whitespace after it: linear in the text overall.
-        }
-        if (matched) {
-            end = at;
-            return start;
-        }
-    }
-    return std::string::npos;
-}
-
-// The NaN probe: a copy of the submission's shaders whose PostProcess.frag paints every NaN output
-// magenta. GL leaves the 8-bit conversion of NaN to the driver and Mesa writes 0, so without the probe
-// a tone map that divides 0 by 0 on black pixels renders exactly like a guarded one. Returns "" when
-// the shader's main() or its vec3/vec4 output cannot be found (the case then runs unprobed).
-// `shaderDir` is the private copy, complete (the sources are size-capped by the copy-in).
-std::string writeNanProbe(const std::string& shaderDir, const std::string& probeDir) {
-    fs::create_directories(probeDir);
-    for (const auto& entry : fs::directory_iterator(shaderDir)) {
-        if (entry.is_regular_file()) fs::copy_file(entry.path(), fs::path(probeDir) / entry.path().filename(), fs::copy_options::overwrite_existing);
-    }
-    const fs::path own = fs::path(shaderDir) / "PostProcess.frag";
-    if (!fs::exists(own)) return "";
-    const std::string source = readFile(own.string());
-    std::size_t mainEnd = 0, outEnd = 0;
-    std::vector<std::string> unused, output;
-    std::size_t mainAt = findTokens(source, {"void", "main", "(", ")"}, mainEnd, unused);
-    if (mainAt == std::string::npos) mainAt = findTokens(source, {"void", "main", "(", "void", ")"}, mainEnd, unused);
-    // The first vec3 or vec4 output, whichever comes first.
-    std::size_t outAt = findTokens(source, {"out", "vec3", "*", ";"}, outEnd, output);
-    std::string type = "vec3";
-    std::vector<std::string> output4;
-    const std::size_t out4At = findTokens(source, {"out", "vec4", "*", ";"}, outEnd, output4);
-    if (out4At < outAt) {
-        outAt = out4At;
-        output = output4;
-        type = "vec4";
-    }
-    if (mainAt == std::string::npos || outAt == std::string::npos) return "";
-    const std::string name = output[0];
-    const std::string magenta = type == "vec3" ? "vec3(1.0, 0.0, 1.0)" : "vec4(1.0, 0.0, 1.0, 1.0)";
-    const fs::path probe = fs::path(probeDir) / "PostProcess.frag";
-    fs::remove(probe);
-    std::ofstream(probe) << source.substr(0, mainAt) << "void t10gradeStudentMain()" << source.substr(mainEnd)
-                         << "\n// Added by t10-grade: NaN outputs are painted magenta so that the 8-bit frame shows them.\n"
-                         << "void main() {\n    t10gradeStudentMain();\n    if (any(isnan(" << name << "))) " << name
-                         << " = " << magenta << ";\n}\n";
-    return probeDir;
-}
-
-// FNV-1a: names a build folder after what was built.
-std::string hashOf(const std::string& text) {
-    std::uint64_t hash = 1469598103934665603ull;
-    for (const unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    std::ostringstream out;
-    out << std::hex << hash;
-    return out.str();
-}
-
-// A folder is filled under a temporary name and renamed into place, so that parallel graders (or
-// jobs) sharing the cache never see half of it.
-void publishDirectory(const fs::path& temporary, const fs::path& target) {
-    std::error_code error;
-    fs::rename(temporary, target, error);
-    if (error) fs::remove_all(temporary); // another grader got there first: keep theirs
-}
-
-std::string uniqueSuffix() {
-    static std::atomic<int> counter{0};
-    return "." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
-// The compile and link recipe the build wrote for submissions (grader/CMakeLists.txt).
-struct HostKit {
-    std::string compiler;
-    std::vector<std::string> flags, includes, defines, libs;
-    std::string text;
-};
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ';');)
-        if (!item.empty()) items.push_back(item);
-    return items;
-}
-
-HostKit loadHostKit() {
-    HostKit kit;
-    kit.text = readFile(T10_GRADE_HOST_KIT);
-    std::stringstream in(kit.text);
-    for (std::string line; std::getline(in, line);) {
-        const auto space = line.find(' ');
-        const std::string key = line.substr(0, space);
-        const std::string value = space == std::string::npos ? "" : line.substr(space + 1);
-        if (key == "compiler") kit.compiler = value;
-        else if (key == "flags") kit.flags = splitList(value);
-        else if (key == "includes") kit.includes = splitList(value);
-        else if (key == "defines") kit.defines = splitList(value);
-        else if (key == "libs") kit.libs = splitList(value);
-    }
-    if (kit.compiler.empty()) throw Error(std::string(T10_GRADE_HOST_KIT) + ": no compiler line");
-    return kit;
-}
-
-
-// The FNV-1a of a file's contents, read without following a symlink; "" when it cannot be read.
-std::string fileHash(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0) return "";
-    std::string data;
-    char buffer[65536];
-    for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) > 0;) data.append(buffer, static_cast<std::size_t>(n));
-    ::close(fd);
-    return hashOf(data);
-}
-
-// A cached folder carries the hash of every file in it, recorded when the grader published it; it is
-// used only while its contents still match.
-constexpr const char* kManifest = "manifest.t10";
-
-std::string manifestOf(const fs::path& dir) {
-    std::vector<std::string> lines;
-    for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator(); ++it) {
-        const fs::file_status status = it->symlink_status();
-        const std::string relative = fs::relative(it->path(), dir).string();
-        if (relative == kManifest) continue;
-        if (fs::is_directory(status)) continue;
-        lines.push_back((fs::is_regular_file(status) ? fileHash(it->path().string()) : std::string("not-a-file")) + " " + relative);
-    }
-    std::sort(lines.begin(), lines.end());
-    std::string text;
-    for (const std::string& line : lines) text += line + "\n";
-    return text;
-}
-
-void writeManifest(const fs::path& dir) { std::ofstream(dir / kManifest) << manifestOf(dir); }
-
-bool manifestHolds(const fs::path& dir) {
-    std::error_code error;
-    if (!fs::is_regular_file(fs::symlink_status(dir / kManifest, error))) return false;
-    return readFile((dir / kManifest).string()) == manifestOf(dir);
-}
-
-// A folder of the grader's work tree: owned by the job's uid when it must write there.
-void makeDir(const fs::path& dir, uid_t owner, mode_t mode) {
-    if (::mkdir(dir.c_str(), mode) != 0 && errno != EEXIST) throw Error(dir.string() + ": cannot create: " + std::strerror(errno));
-    if (::chmod(dir.c_str(), mode) != 0) throw Error(dir.string() + ": chmod: " + std::strerror(errno));
-    if (owner != 0 && ::chown(dir.c_str(), owner, owner) != 0) throw Error(dir.string() + ": chown: " + std::strerror(errno));
-}
-
-// Copies a file the grader owns. Its descriptors are close-on-exec: a descriptor open for writing
-// inherited by a process forked meanwhile by another job would make exec() of the copy fail with
-// "Text file busy" (std::filesystem::copy_file does not set O_CLOEXEC).
-void copyFile(const fs::path& from, const fs::path& to, mode_t mode, uid_t owner = 0) {
-    const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (in < 0) throw Error(from.string() + ": cannot open: " + std::strerror(errno));
-    const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);
-    if (out < 0) {
-        const int error = errno;
-        ::close(in);
-        throw Error(to.string() + ": cannot create: " + std::strerror(error));
-    }
-    char buffer[65536];
-    bool ok = true;
-    for (ssize_t n; ok && (n = ::read(in, buffer, sizeof buffer)) != 0;) {
-        ok = n > 0 && ::write(out, buffer, static_cast<std::size_t>(n)) == n;
-    }
-    const int error = errno;
-    if (ok && owner != 0 && ::fchown(out, owner, owner) != 0) ok = false;
-    ::fchmod(out, mode);
-    ::close(in);
-    ::close(out);
-    if (!ok) throw Error(to.string() + ": cannot copy from " + from.string() + ": " + std::strerror(error));
-}
-
-// Copies a folder of regular files (the grader's own: the Mesa shader cache seed), owned by `owner`.
-void copyTree(const fs::path& from, const fs::path& to, uid_t owner) {
-    makeDir(to, owner, 0700);
-    for (const auto& entry : fs::directory_iterator(from)) {
-        const fs::file_status status = entry.symlink_status();
-        if (fs::is_directory(status)) copyTree(entry.path(), to / entry.path().filename(), owner);
-        else if (fs::is_regular_file(status)) copyFile(entry.path(), to / entry.path().filename(), 0600, owner);
-    }
-}
-
-// What a render left in its output folder, examined after every process of it is dead: "" when it is
-// regular files and folders within the caps, else what is wrong (the submission's fault).
-constexpr int kMaxOutputFiles = 512;
-constexpr std::uintmax_t kMaxOutputBytes = 64ull * 1024 * 1024;
-
-std::string checkOutputs(const fs::path& dir) {
-    int files = 0;
-    std::uintmax_t bytes = 0;
-    std::error_code error;
-    for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-        const fs::file_status status = it->symlink_status();
-        const std::string name = fs::relative(it->path(), dir).string();
-        if (fs::is_symlink(status)) return "it left a symlink in its output folder (" + name + "): outputs must be regular files";
-        if (fs::is_directory(status)) continue;
-        if (!fs::is_regular_file(status)) return "it left something that is not a regular file in its output folder (" + name + ")";
-        bytes += fs::file_size(it->path());
-        if (++files > kMaxOutputFiles) return "it wrote more than " + std::to_string(kMaxOutputFiles) + " files";
-        if (bytes > kMaxOutputBytes) return "it wrote more than " + std::to_string(kMaxOutputBytes >> 20) + " MiB";
-    }
-    if (error) return "its output folder cannot be listed: " + error.message();
-    return "";
-}
-
-// The frame's PNG header, read before any decoder or FLIP sees the file: "" when it is a PNG of the
-// expected size.
-std::string checkFrame(const std::string& path, int width, int height) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
-    if (fd < 0) return std::string("frame.png cannot be opened: ") + std::strerror(errno);
-    unsigned char header[24] = {};
-    const ssize_t n = ::read(fd, header, sizeof header);
-    ::close(fd);
-    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-    if (n != 24 || std::memcmp(header, kSignature, 8) != 0 || std::memcmp(header + 12, "IHDR", 4) != 0) {
-        return "frame.png is not a PNG file";
-    }
-    auto big = [&](int at) { return (int(header[at]) << 24) | (int(header[at + 1]) << 16) | (int(header[at + 2]) << 8) | int(header[at + 3]); };
-    if (big(16) != width || big(20) != height) {
-        return "frame.png is " + std::to_string(big(16)) + "x" + std::to_string(big(20)) + ", the case renders " +
-               std::to_string(width) + "x" + std::to_string(height);
-    }
-    return "";
 }
 
 // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
@@ -582,15 +317,6 @@ private:
     void renderReference();
     std::string referenceStageDir() const { return std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage; }
     SandboxRun sandbox(int job, const SandboxLimits& limits) const;
-    std::vector<std::string> caseArgs(const CaseSpec& spec, const std::string& inputs) const {
-        std::vector<std::string> args;
-        for (std::string arg : spec.args) {
-            const auto at = arg.find("{inputs}");
-            if (at != std::string::npos) arg.replace(at, 8, inputs);
-            args.push_back(arg);
-        }
-        return args;
-    }
     // Builds Tutorial10.cpp (a host path) in the sandbox of `job`; returns the cached program (a host
     // path only the grader can read), or "" with the compiler's message in `log`.
     std::string build(const std::string& source, int job, const fs::path& work, std::string& log) const;
@@ -752,7 +478,7 @@ void Grader::prepareReference() {
         const std::string out = temporary + "/" + spec.id;
         fs::create_directories(out);
         std::vector<std::string> argv{referenceBinary_, "--headless", "--backend", "egl", "--frames", "1"};
-        for (const std::string& a : caseArgs(spec, inputsDir_)) argv.push_back(a);
+        for (const std::string& a : caseArgs(spec.args, inputsDir_)) argv.push_back(a);
         argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
         // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
         // are the reference's, and compiling them again costs more than the render.
@@ -765,78 +491,7 @@ void Grader::prepareReference() {
 }
 
 std::string Grader::build(const std::string& source, int job, const fs::path& work, std::string& log) const {
-    // The key: the code, the recipe, the sandbox's layout, and when each library was last built (a
-    // rebuilt common/ must not leave stale programs in the cache). Every part is built the same way:
-    // Part 3's blur passes are recorded at run time by the frame loop's capture hook (--capture-passes).
-    std::string key = kit_.text + info_.stage + readFile(source) + "sandbox layout 2 " + isolationName(isolation_);
-    for (const std::string& lib : kit_.libs) {
-        std::error_code error;
-        const auto time = fs::last_write_time(lib, error);
-        if (!error) key += lib + std::to_string(time.time_since_epoch().count());
-    }
-    const fs::path dir = fs::absolute(config_.cacheDir) / "builds" / hashOf(key);
-    const std::string program = (dir / "student").string();
-    if (fs::exists(dir) && manifestHolds(dir)) {
-        log = readFile((dir / "build.log").string());
-        return program;
-    }
-    std::error_code ignored;
-    fs::remove_all(dir, ignored); // absent, or failed its hashes: built again
-
-    const SandboxLimits limits{300.0, 300, 4096, 256, 256, 64, 512};
-    SandboxRun run = sandbox(job, limits);
-    const fs::path out = work / ("build" + uniqueSuffix());
-    makeDir(out, run.uid, 0700);
-    run.mounts.push_back({source, "/submission/Tutorial10.cpp", false});
-    run.mounts.push_back({out.string(), "/out", true});
-    run.workingDirectory = "/out";
-    const bool namespaces = isolation_ == Isolation::Namespaces;
-    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", std::string("TMPDIR=") + (namespaces ? "/tmp" : out.string()),
-               std::string("HOME=") + (namespaces ? "/tmp" : out.string())};
-
-    std::vector<std::string> argv{kit_.compiler};
-    argv.insert(argv.end(), kit_.flags.begin(), kit_.flags.end());
-    for (std::size_t i = 0; i < kit_.includes.size(); ++i) argv.push_back("-I" + run.path("/t10/include/" + std::to_string(i)));
-    for (const std::string& define : kit_.defines) argv.push_back("-D" + define);
-    argv.push_back(std::string("-DT10_STAGE_NAME=\"") + info_.stage + "\"");
-    // Where the program finds its shaders without --shader-dir: the submission's own folder inside
-    // the sandbox (it does not exist outside it).
-    argv.push_back("-DT10_STAGE_SHADER_DIR=\"/submission\"");
-    // The submission's own file, so that the compiler's messages name it.
-    argv.insert(argv.end(), {run.path("/submission/Tutorial10.cpp"), "-o", run.path("/out/student")});
-    for (std::size_t i = 0; i < kit_.libs.size(); ++i) {
-        const std::string& lib = kit_.libs[i];
-        const bool project = !lib.empty() && lib[0] == '/' && lib.rfind("/usr/", 0) != 0;
-        argv.push_back(project ? run.path("/t10/lib/" + std::to_string(i) + "-" + fs::path(lib).filename().string()) : lib);
-    }
-    const RunResult result = runSandboxed(run, argv, (work / "build.log").string());
-    log = result.output;
-    const fs::path built = out / "student";
-    std::error_code error;
-    const bool regular = fs::is_regular_file(fs::symlink_status(built, error));
-    if (!result.ok() || !regular) {
-        if (!result.timedOut && result.signal == 0 && log.empty()) log = "the compiler " + result.describe();
-        if (result.timedOut) log += "\nthe build " + result.describe();
-        fs::remove_all(out, ignored);
-        return "";
-    }
-    // Published by the grader: the program, its log, the command, and their hashes.
-    const fs::path temporary = dir.string() + uniqueSuffix();
-    fs::create_directories(temporary);
-    copyFile(built, temporary / "student", 0700);
-    std::ofstream(temporary / "build.log") << log;
-    {
-        // The command, so that an instructor can see how it was built (paths as inside the sandbox).
-        std::ofstream script(temporary / "build.sh");
-        script << "#!/bin/sh\n# run by t10-grade inside its sandbox (" << isolationName(isolation_) << ")\n";
-        for (const std::string& a : argv) script << "'" << a << "' ";
-        script << "\n";
-    }
-    fs::remove_all(out, ignored);
-    writeManifest(temporary);
-    publishDirectory(temporary, dir);
-    if (!manifestHolds(dir)) return build(source, job, work, log);
-    return program;
+    return buildProgram(kit_, info_.stage, config_.cacheDir, sandbox(job, kBuildLimits), source, work, log);
 }
 
 Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, const std::string& reportDir,
@@ -976,27 +631,8 @@ RunResult Grader::renderCase(const CaseSpec& spec, const Job& job, const fs::pat
         const std::string probe = writeNanProbe(job.shaders().string(), (job.work / "nan-probe-shaders").string());
         if (!probe.empty()) shaderDir = probe;
     }
-    const bool namespaces = isolation_ == Isolation::Namespaces;
-    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
-    const std::string tmp = (job.work / "tmp").string();
-    SandboxRun run = job.base;
-    run.mounts.push_back({program.string(), "/t10/bin/student", false});
-    run.mounts.push_back({shaderDir, "/submission", false});
-    run.mounts.push_back({publicInputs_.string(), "/t10/inputs", false});
-    run.mounts.push_back({(job.work / "mesa-cache").string(), "/mesa-cache", true});
-    run.mounts.push_back({dir.string(), "/out", true});
-    run.workingDirectory = "/out";
-    // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
-    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
-               "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp),
-               "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
-    std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
-    for (const std::string& a : caseArgs(spec, run.path("/t10/inputs"))) argv.push_back(a);
-    argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
-                             run.path("/out/frame.png")});
-    // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
-    if (config_.part == 3) argv.insert(argv.end(), {"--capture-passes", run.path("/out")});
-    return runSandboxed(run, argv, (logs / "run.log").string());
+    return runCase(job.base, program, shaderDir, publicInputs_, job.work, dir, spec.args, config_.part == 3,
+                   (logs / "run.log").string());
 }
 
 void Grader::reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const {
