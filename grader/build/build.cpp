@@ -44,6 +44,30 @@ HostKit loadHostKit() {
     return kit;
 }
 
+std::vector<Mount> projectMounts(const HostKit& kit) {
+    std::vector<Mount> mounts;
+    // The project's public files at neutral paths (/t10/...): host paths do not show inside.
+    for (std::size_t i = 0; i < kit.includes.size(); ++i) {
+        const std::string inside = "/t10/include/" + std::to_string(i);
+        mounts.push_back({kit.includes[i], inside, false});
+    }
+    for (std::size_t i = 0; i < kit.libs.size(); ++i) {
+        const std::string& lib = kit.libs[i];
+        if (lib.empty() || lib[0] != '/' || lib.rfind("/usr/", 0) == 0) continue;
+        mounts.push_back({lib, "/t10/lib/" + std::to_string(i) + "-" + fs::path(lib).filename().string(), false});
+    }
+    // The common shaders and assets keep their host paths: libt10_common.a has them compiled in. They
+    // are the one place where the project's location shows inside.
+    for (const std::string& define : kit.defines) {
+        for (const std::string name : {"T10_COMMON_SHADER_DIR=", "T10_ASSET_DIR="}) {
+            if (define.rfind(name, 0) != 0) continue;
+            const std::string path = define.substr(name.size() + 1, define.size() - name.size() - 2);
+            mounts.push_back({path, path, false});
+        }
+    }
+    return mounts;
+}
+
 std::string buildProgram(const HostKit& kit, const std::string& stage, const std::string& cacheDir, const SandboxRun& sandbox,
                          const std::string& source, const fs::path& work, std::string& log) {
     // The key: the code, the recipe, the sandbox's layout, and when each library was last built (a

@@ -3,6 +3,7 @@
 // visible in the 8-bit frame.
 #include "capture/capture.hpp"
 
+#include "capture/cases.hpp"
 #include "intake/staging.hpp"
 
 #include <algorithm>
@@ -98,16 +99,6 @@ std::string writeNanProbe(const std::string& shaderDir, const std::string& probe
                          << "void main() {\n    t10gradeStudentMain();\n    if (any(isnan(" << name << "))) " << name
                          << " = " << magenta << ";\n}\n";
     return probeDir;
-}
-
-std::vector<std::string> caseArgs(const std::vector<std::string>& args, const std::string& inputs) {
-    std::vector<std::string> replaced;
-    for (std::string arg : args) {
-        const auto at = arg.find("{inputs}");
-        if (at != std::string::npos) arg.replace(at, 8, inputs);
-        replaced.push_back(arg);
-    }
-    return replaced;
 }
 
 RunResult runCase(const SandboxRun& base, const fs::path& program, const std::string& shaderDir, const fs::path& inputs,

@@ -10,9 +10,6 @@
 
 namespace t10::grade {
 
-// A case's arguments with "{inputs}" replaced by the synthetic inputs' folder `inputs`.
-std::vector<std::string> caseArgs(const std::vector<std::string>& args, const std::string& inputs);
-
 // Runs `program` (the job's copy) headless for one frame in `base` (the job's sandbox) with the
 // shaders of `shaderDir`, the inputs of `inputs`, the job's Mesa cache and tmp under `work`, and the
 // case's `args`; it writes its dump and frame.png to `dir` (made by the caller, the job's own) and,

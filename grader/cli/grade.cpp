@@ -16,6 +16,7 @@
 // report, 1 when the grader failed, 2 on bad usage.
 #include "build/build.hpp"
 #include "capture/capture.hpp"
+#include "capture/cases.hpp"
 #include "checks/checks.hpp"
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
@@ -76,28 +77,6 @@ PartFiles partFiles(int part) {
     if (part == 3) files.asked.push_back("Gauss.frag");
     else files.asked.insert(files.asked.end(), {"PostProcess.frag", "PostProcessInit.frag"});
     return files;
-}
-
-struct CaseSpec {
-    std::string id;
-    std::string description;
-    bool camera;
-    std::vector<std::string> args; // "{inputs}" is replaced by the synthetic inputs' folder
-    int width;                     // of the frame the case must write
-    int height;
-};
-
-// Small sizes keep a submission to a few seconds on a CPU renderer; 160x90 halves to 80x45 and its
-// luminance chain passes odd sizes (45, 5), unlike 128x128.
-std::vector<CaseSpec> cases(int part) {
-    std::vector<CaseSpec> list{
-        {"pot", "128x128 (power of two), camera default", true, {"--size", "128x128", "--camera", "default"}, 128, 128},
-        {"npot", "160x90 (not a power of two), camera lights", true, {"--size", "160x90", "--camera", "lights"}, 160, 90},
-        {"extremes", "64x64 input: black pixels, and every pixel a different luminance from 0.001 to 50", false,
-         {"--input", "{inputs}/ramp.exr"}, 64, 64},
-    };
-    if (part >= 2) list.push_back({"hot", "128x128 input: one hot 2x2 block on grey", false, {"--input", "{inputs}/hot.exr"}, 128, 128});
-    return list;
 }
 
 struct Config {
@@ -312,9 +291,6 @@ public:
 
 private:
     void chooseIsolation();
-    void prepareInputs();
-    void prepareReference();
-    void renderReference();
     std::string referenceStageDir() const { return std::string(T10_GRADE_SOURCE_DIR) + "/" + info_.stage; }
     SandboxRun sandbox(int job, const SandboxLimits& limits) const;
     // Builds Tutorial10.cpp (a host path) in the sandbox of `job`; returns the cached program (a host
@@ -348,7 +324,6 @@ private:
     fs::path workRoot_;              // private copies, programs and outputs of the jobs
     fs::path publicInputs_;          // the synthetic inputs, readable by the jobs
     std::vector<Mount> projectMounts_; // headers, libraries, common shaders and assets, read-only
-    std::vector<std::string> includes_, libs_, defines_; // as seen inside
 };
 
 Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(config_.part)), files_(partFiles(config_.part)),
@@ -367,31 +342,15 @@ Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(confi
     workRoot_ = fs::temp_directory_path() / ("t10-grade" + uniqueSuffix());
     makeDir(workRoot_, 0, 0711); // the jobs may pass through it, not list it
 
-    // The project's public files at neutral paths (/t10/...): host paths do not show inside.
-    for (std::size_t i = 0; i < kit_.includes.size(); ++i) {
-        const std::string inside = "/t10/include/" + std::to_string(i);
-        projectMounts_.push_back({kit_.includes[i], inside, false});
-    }
-    for (std::size_t i = 0; i < kit_.libs.size(); ++i) {
-        const std::string& lib = kit_.libs[i];
-        if (lib.empty() || lib[0] != '/' || lib.rfind("/usr/", 0) == 0) continue;
-        projectMounts_.push_back({lib, "/t10/lib/" + std::to_string(i) + "-" + fs::path(lib).filename().string(), false});
-    }
-    // The common shaders and assets keep their host paths: libt10_common.a has them compiled in. They
-    // are the one place where the project's location shows inside.
-    for (const std::string& define : kit_.defines) {
-        for (const std::string name : {"T10_COMMON_SHADER_DIR=", "T10_ASSET_DIR="}) {
-            if (define.rfind(name, 0) != 0) continue;
-            const std::string path = define.substr(name.size() + 1, define.size() - name.size() - 2);
-            projectMounts_.push_back({path, path, false});
-        }
-    }
+    projectMounts_ = projectMounts(kit_);
 
     // As root the jobs run as uids of their own: a checkout they cannot enter (inside a 0700 home) is
     // staged where they can, or the run stops saying which folder and what to do.
     if (!jobUids_.empty()) stageUnreachableMounts(projectMounts_, (workRoot_ / "project").string(), jobUids_.front(), isolation_);
-    prepareInputs();
-    prepareReference();
+    publicInputs_ = workRoot_ / "inputs";
+    inputsDir_ = prepareInputs(config_.cacheDir, publicInputs_);
+    referenceDir_ = renderReference(referenceBinary_, info_.stage, info_.shaders, referenceStageDir(), config_.cacheDir,
+                                    inputsDir_, config_.part);
     // The reference host code (for submissions without Tutorial10.cpp) is built once here rather than
     // by each of the parallel jobs.
     const fs::path work = workRoot_ / "reference-host";
@@ -436,58 +395,6 @@ SandboxRun Grader::sandbox(int job, const SandboxLimits& limits) const {
     run.mounts = projectMounts_;
     run.limits = limits;
     return run;
-}
-
-void Grader::prepareInputs() {
-    inputsDir_ = (fs::absolute(config_.cacheDir) / "inputs").string();
-    // Inputs of an older grader (without ramp.exr) or whose recorded hashes no longer hold are made again.
-    if (fs::exists(inputsDir_) && (!manifestHolds(inputsDir_) || !fs::exists(inputsDir_ + "/ramp.exr")))
-        fs::remove_all(inputsDir_);
-    if (!fs::exists(inputsDir_)) {
-        const std::string temporary = inputsDir_ + uniqueSuffix();
-        fs::create_directories(temporary);
-        const RunResult result = runLimited({std::string(T10_GRADE_BIN_DIR) + "/make_test_images", temporary},
-                                            Limits{}, temporary + ".log");
-        if (!result.ok()) throw Error("make_test_images " + result.describe() + ":\n" + result.output);
-        fs::remove(temporary + ".log");
-        writeManifest(temporary);
-        publishDirectory(temporary, inputsDir_);
-    }
-    // The jobs read a copy: the cache itself is the grader's alone.
-    publicInputs_ = workRoot_ / "inputs";
-    fs::copy(inputsDir_, publicInputs_);
-    fs::remove(publicInputs_ / kManifest);
-    fs::permissions(publicInputs_, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                       fs::perms::others_read | fs::perms::others_exec, fs::perm_options::replace);
-}
-
-void Grader::prepareReference() {
-    // The reference renders are kept until the reference program or its shaders change, and used only
-    // while their recorded hashes hold; the reference is trusted code and renders outside the sandbox.
-    std::string stamp = referenceBinary_ + " with a Mesa cache seed";
-    stamp += std::to_string(fs::last_write_time(referenceBinary_).time_since_epoch().count());
-    for (const std::string& shader : info_.shaders) stamp += readFile(referenceStageDir() + "/" + shader);
-    referenceDir_ = (fs::absolute(config_.cacheDir) / ("reference-" + std::string(info_.stage) + "-" + hashOf(stamp))).string();
-    if (fs::exists(referenceDir_) && manifestHolds(referenceDir_)) return;
-    if (fs::exists(referenceDir_)) {
-        std::cerr << "t10-grade: warning: " << referenceDir_ << " does not match its recorded hashes: rendered again\n";
-        fs::remove_all(referenceDir_);
-    }
-    const std::string temporary = referenceDir_ + uniqueSuffix();
-    for (const CaseSpec& spec : cases(config_.part)) {
-        const std::string out = temporary + "/" + spec.id;
-        fs::create_directories(out);
-        std::vector<std::string> argv{referenceBinary_, "--headless", "--backend", "egl", "--frames", "1"};
-        for (const std::string& a : caseArgs(spec.args, inputsDir_)) argv.push_back(a);
-        argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
-        // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
-        // are the reference's, and compiling them again costs more than the render.
-        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", {"MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed"});
-        if (!result.ok()) throw Error("the reference " + std::string(info_.stage) + " (" + spec.id + ") " + result.describe() + ":\n" + result.output);
-    }
-    writeManifest(temporary);
-    publishDirectory(temporary, referenceDir_);
-    if (!manifestHolds(referenceDir_)) throw Error(referenceDir_ + ": changed while it was published");
 }
 
 std::string Grader::build(const std::string& source, int job, const fs::path& work, std::string& log) const {

@@ -1,0 +1,93 @@
+// The cases every submission renders, the synthetic inputs two of them read, and the reference
+// stage's renders of them (kept in the grader's cache), against which the checks compare.
+#include "capture/cases.hpp"
+
+#include "intake/staging.hpp"
+#include "isolation/run_limited.hpp"
+#include "t10/error.hpp"
+
+#include <iostream>
+
+namespace t10::grade {
+
+namespace fs = std::filesystem;
+
+// Small sizes keep a submission to a few seconds on a CPU renderer; 160x90 halves to 80x45 and its
+// luminance chain passes odd sizes (45, 5), unlike 128x128.
+std::vector<CaseSpec> cases(int part) {
+    std::vector<CaseSpec> list{
+        {"pot", "128x128 (power of two), camera default", true, {"--size", "128x128", "--camera", "default"}, 128, 128},
+        {"npot", "160x90 (not a power of two), camera lights", true, {"--size", "160x90", "--camera", "lights"}, 160, 90},
+        {"extremes", "64x64 input: black pixels, and every pixel a different luminance from 0.001 to 50", false,
+         {"--input", "{inputs}/ramp.exr"}, 64, 64},
+    };
+    if (part >= 2) list.push_back({"hot", "128x128 input: one hot 2x2 block on grey", false, {"--input", "{inputs}/hot.exr"}, 128, 128});
+    return list;
+}
+
+std::vector<std::string> caseArgs(const std::vector<std::string>& args, const std::string& inputs) {
+    std::vector<std::string> replaced;
+    for (std::string arg : args) {
+        const auto at = arg.find("{inputs}");
+        if (at != std::string::npos) arg.replace(at, 8, inputs);
+        replaced.push_back(arg);
+    }
+    return replaced;
+}
+
+std::string prepareInputs(const std::string& cacheDir, const fs::path& publicInputs) {
+    const std::string inputsDir = (fs::absolute(cacheDir) / "inputs").string();
+    // Inputs of an older grader (without ramp.exr) or whose recorded hashes no longer hold are made again.
+    if (fs::exists(inputsDir) && (!manifestHolds(inputsDir) || !fs::exists(inputsDir + "/ramp.exr")))
+        fs::remove_all(inputsDir);
+    if (!fs::exists(inputsDir)) {
+        const std::string temporary = inputsDir + uniqueSuffix();
+        fs::create_directories(temporary);
+        const RunResult result = runLimited({std::string(T10_GRADE_BIN_DIR) + "/make_test_images", temporary},
+                                            Limits{}, temporary + ".log");
+        if (!result.ok()) throw Error("make_test_images " + result.describe() + ":\n" + result.output);
+        fs::remove(temporary + ".log");
+        writeManifest(temporary);
+        publishDirectory(temporary, inputsDir);
+    }
+    // The jobs read a copy: the cache itself is the grader's alone.
+    fs::copy(inputsDir, publicInputs);
+    fs::remove(publicInputs / kManifest);
+    fs::permissions(publicInputs, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                       fs::perms::others_read | fs::perms::others_exec, fs::perm_options::replace);
+    return inputsDir;
+}
+
+std::string renderReference(const std::string& referenceBinary, const std::string& stage,
+                            const std::vector<std::string>& shaders, const std::string& stageDir, const std::string& cacheDir,
+                            const std::string& inputsDir, int part) {
+    // The reference renders are kept until the reference program or its shaders change, and used only
+    // while their recorded hashes hold; the reference is trusted code and renders outside the sandbox.
+    std::string stamp = referenceBinary + " with a Mesa cache seed";
+    stamp += std::to_string(fs::last_write_time(referenceBinary).time_since_epoch().count());
+    for (const std::string& shader : shaders) stamp += readFile(stageDir + "/" + shader);
+    const std::string referenceDir = (fs::absolute(cacheDir) / ("reference-" + stage + "-" + hashOf(stamp))).string();
+    if (fs::exists(referenceDir) && manifestHolds(referenceDir)) return referenceDir;
+    if (fs::exists(referenceDir)) {
+        std::cerr << "t10-grade: warning: " << referenceDir << " does not match its recorded hashes: rendered again\n";
+        fs::remove_all(referenceDir);
+    }
+    const std::string temporary = referenceDir + uniqueSuffix();
+    for (const CaseSpec& spec : cases(part)) {
+        const std::string out = temporary + "/" + spec.id;
+        fs::create_directories(out);
+        std::vector<std::string> argv{referenceBinary, "--headless", "--backend", "egl", "--frames", "1"};
+        for (const std::string& a : caseArgs(spec.args, inputsDir)) argv.push_back(a);
+        argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
+        // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
+        // are the reference's, and compiling them again costs more than the render.
+        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", {"MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed"});
+        if (!result.ok()) throw Error("the reference " + stage + " (" + spec.id + ") " + result.describe() + ":\n" + result.output);
+    }
+    writeManifest(temporary);
+    publishDirectory(temporary, referenceDir);
+    if (!manifestHolds(referenceDir)) throw Error(referenceDir + ": changed while it was published");
+    return referenceDir;
+}
+
+} // namespace t10::grade
