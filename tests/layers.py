@@ -30,7 +30,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     isolation, intake, diagnosis      (nothing of the grader below them)
     build     isolation, intake       (a submission's host code compiled in the sandbox, cached)
     capture   build, isolation, intake            (a case rendered in the sandbox; its outputs examined)
-    checks    diagnosis               (render results checked; mistakes named)
+    checks    diagnosis, isolation    (render results checked, FLIP run as a limited process; mistakes named)
     scoring   checks, diagnosis
     report    scoring, checks, diagnosis, intake    (report.json, report.html, gradebook, class index)
     platforms report and what it may include          (the platforms' result files)
@@ -92,7 +92,7 @@ GRADER_ALLOWED = {
     "diagnosis": {"diagnosis"},
     "build": {"build", "isolation", "intake"},
     "capture": {"capture", "build", "isolation", "intake"},
-    "checks": {"checks", "diagnosis"},
+    "checks": {"checks", "diagnosis", "isolation"},
     "scoring": {"scoring", "checks", "diagnosis"},
     "report": REPORT_STAGES,
     "platforms": REPORT_STAGES | {"platforms"},

@@ -19,6 +19,7 @@
 #include "capture/capture.hpp"
 #include "capture/cases.hpp"
 #include "checks/checks.hpp"
+#include "checks/flip.hpp"
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
 #include "report/report.hpp"
@@ -78,16 +79,6 @@ PartFiles partFiles(int part) {
     return files;
 }
 
-std::string tail(const std::string& text, std::size_t lines) {
-    std::size_t pos = text.size();
-    for (std::size_t n = 0; n <= lines; ++n) {
-        if (pos == 0) return text;
-        pos = text.rfind('\n', pos - 1);
-        if (pos == std::string::npos) return text;
-    }
-    return text.substr(pos + 1);
-}
-
 // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
 // the report names them after the submission folder instead, as the student knows them.
 std::string studentPaths(std::string text, const fs::path& work, const std::string& submission) {
@@ -131,8 +122,6 @@ private:
     // Builds Tutorial10.cpp (a host path) in the sandbox of `job`; returns the cached program (a host
     // path only the grader can read), or "" with the compiler's message in `log`.
     std::string build(const std::string& source, int job, const fs::path& work, std::string& log) const;
-    Check flipCheck(const CaseSpec& spec, const std::string& studentFrame, const std::string& reportDir,
-                    const std::vector<Check>& caseChecks) const;
     // The steps of grade(). Those that return bool (or "") set the report's status and message when
     // the submission stops there.
     Report startReport(const std::string& submission, const std::string& name) const;
@@ -236,68 +225,6 @@ std::string Grader::build(const std::string& source, int job, const fs::path& wo
     return buildProgram(kit_, info_.stage, config_.cacheDir, sandbox(job, kBuildLimits), source, work, log);
 }
 
-Check Grader::flipCheck(const CaseSpec& spec, const std::string& studentFrame, const std::string& reportDir,
-                        const std::vector<Check>& caseChecks) const {
-    Check check;
-    check.id = spec.id + ".flip";
-    check.steps = partSteps(config_.part);
-    const std::string referenceFrame = referenceDir_ + "/" + spec.id + "/frame.png";
-    const fs::path images = fs::path(reportDir) / "images";
-    fs::create_directories(images);
-    const std::string base = check.id + ".flip";
-    const RunResult result = runLimited({T10_GRADE_FLIP, "-r", referenceFrame, "-t", studentFrame, "-v", "1", "-d",
-                                         images.string(), "-b", base},
-                                        Limits{120.0, 120, 4096}, (images / (base + ".log")).string());
-    const auto at = result.output.find("Mean:");
-    check.tolerance = "mean FLIP <= 0.005: the reference renders identically on the same driver (0), an "
-                      "equivalent rewrite measures below 1e-6, the subtlest known mistake 0.03";
-    // FLIP that cannot start (its venv's interpreter missing or out of the grader's reach) is the
-    // grader's failure, never the student's.
-    if (!result.timedOut && result.signal == 0 && (result.exitCode == 126 || result.exitCode == 127)) {
-        throw Error(std::string(T10_GRADE_FLIP) + " cannot be run (" + result.describe() + "): " + tail(result.output, 3) +
-                    " (make grade-deps installs it; its interpreter must be reachable by the user grading)");
-    }
-    if (!result.ok() || at == std::string::npos) {
-        // The frame passed the grader's own checks (a PNG of the case's size), so a frame FLIP still
-        // cannot read is the submission's: a failed check, never the grader's failure.
-        check.passed = false;
-        check.measured = "FLIP cannot compare the frame with the reference (" + result.describe() + ")";
-        check.diagnosis = "the frame is not a PNG that FLIP can read";
-        fs::remove(images / (base + ".log"));
-        return check;
-    }
-    const double mean = std::strtod(result.output.c_str() + at + 5, nullptr);
-    // The reference program renders the same frame on the same driver bit for bit (mean 0). An
-    // equivalent rewrite of the operator (the test submission "equivalent") moves a few pixels by one
-    // 8-bit step and measures below 1e-6; the subtlest mistakes of the catalogue measure 0.03 (a tap
-    // at 0.424 sigma, a threshold of 2.5 Yw at 160x90) and the others 0.1 to 0.75.
-    constexpr double kBound = 0.005;
-    check.passed = mean <= kBound;
-    std::ostringstream measured;
-    measured << "mean FLIP " << mean << " against the reference stage (" << spec.description << ")";
-    check.measured = measured.str();
-    fs::remove(images / (base + ".log"));
-    if (check.passed) {
-        fs::remove(images / (base + ".png"));
-        return check;
-    }
-    fs::copy_file(studentFrame, images / (check.id + ".student.png"), fs::copy_options::overwrite_existing);
-    fs::copy_file(referenceFrame, images / (check.id + ".reference.png"), fs::copy_options::overwrite_existing);
-    check.studentImage = "images/" + check.id + ".student.png";
-    check.referenceImage = "images/" + check.id + ".reference.png";
-    check.heatMap = "images/" + base + ".png";
-    for (const Check& c : caseChecks) {
-        if (!c.passed && !c.diagnosis.empty() && !c.followsFrom) {
-            check.diagnosis += (check.diagnosis.empty() ? "" : "; ") + c.id + ": " + c.diagnosis;
-        }
-    }
-    if (check.diagnosis.empty()) {
-        check.diagnosis = "every buffer matches the CPU reference, but the frame differs from the reference stage: "
-                          "look at the heat-map (for example the scene or the view, not the post-process)";
-    }
-    return check;
-}
-
 Report Grader::startReport(const std::string& submission, const std::string& name) const {
     Report report;
     report.submission = name;
@@ -343,7 +270,7 @@ std::string Grader::buildSubmission(const Job& job, Report& report) const {
     std::ofstream(job.out / "build.log") << studentPaths(log, job.work, report.submission);
     if (built.empty()) {
         report.status = Status::BuildFailed;
-        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(tail(log, 40), job.work, report.submission);
+        report.message = "Tutorial10.cpp does not build against common/:\n" + studentPaths(lastLines(log, 40), job.work, report.submission);
     }
     return built;
 }
@@ -391,7 +318,7 @@ void Grader::reportFailedRun(const CaseSpec& spec, const RunResult& result, cons
     report.message = "case " + spec.id + " (" + spec.description + "): the program " + result.describe() +
                      (result.timedOut ? " (limit " + std::to_string(int(config_.timeout)) + " s)" : "") +
                      (result.signal == SIGXFSZ ? " (a file over the size limit)" : "") +
-                     ". Its last output:\n" + studentPaths(tail(o, 30), job.work, report.submission);
+                     ". Its last output:\n" + studentPaths(lastLines(o, 30), job.work, report.submission);
 }
 
 bool Grader::captureCases(const Job& job, const fs::path& program, Report& report, std::vector<CaseRun>& runs) const {
@@ -438,7 +365,8 @@ std::vector<Check> Grader::checkCase(const CaseSpec& spec, const CaseRun& run, c
         checks.push_back(check);
     }
     if (spec.camera) {
-        Check flip = flipCheck(spec, (job.work / ("out-" + spec.id) / "frame.png").string(), job.out.string(), checks);
+        Check flip = flipCheck(config_.part, run, referenceDir_ + "/" + spec.id + "/frame.png",
+                               (job.work / ("out-" + spec.id) / "frame.png").string(), job.out.string(), checks);
         // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
         // every buffer is right and the frame is not: it costs the steps that make the frame.
         const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });

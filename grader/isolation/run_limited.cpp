@@ -13,6 +13,16 @@
 
 namespace t10::grade {
 
+std::string lastLines(const std::string& text, std::size_t lines) {
+    std::size_t pos = text.size();
+    for (std::size_t n = 0; n <= lines; ++n) {
+        if (pos == 0) return text;
+        pos = text.rfind('\n', pos - 1);
+        if (pos == std::string::npos) return text;
+    }
+    return text.substr(pos + 1);
+}
+
 std::string RunResult::describe() const {
     std::ostringstream text;
     if (timedOut) {

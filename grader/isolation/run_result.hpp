@@ -2,6 +2,7 @@
 // run_limited.hpp) ended with. Its own header so that the two runners' headers need not include
 // each other (describe() is defined in run_limited.cpp).
 #pragma once
+#include <cstddef>
 #include <string>
 
 namespace t10::grade {
@@ -16,5 +17,8 @@ struct RunResult {
     // "exit 1", "killed by signal 11 (Segmentation fault)", "timed out after 20 s"
     std::string describe() const;
 };
+
+// The last `lines` lines of a process's output (all of it when it has fewer), for messages that quote it.
+std::string lastLines(const std::string& text, std::size_t lines);
 
 } // namespace t10::grade
