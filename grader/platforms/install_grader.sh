@@ -9,7 +9,7 @@
 # registry reachable at image build time: CMake from PyPI (into $T10_CMAKE_VENV, default /opt/t10-cmake)
 # when the system's is older than the presets need (3.25; Ubuntu 22.04 has 3.22). What a release lacks
 # otherwise is listed in one message, with the base images that work, and the script exits 1.
-# After the build the reference stages' folders are closed to other users: where the grader cannot
+# After the build the reference stages' folders and the TGA reference PNGs are closed to other users: where the grader cannot
 # have user namespaces (Gradescope, most Docker hosts) it runs each job as its own uid, which sees what
 # others may read.
 # Exit 0 when the grader is built; 1 when it cannot be; 2 on bad usage.
@@ -93,10 +93,11 @@ fi
 make -C "$checkout" --no-print-directory grader JOBS="${JOBS:-$(nproc)}"
 say "built $checkout/build/bin/t10-grade"
 
-# The reference stages (each part's answer) and extras/ (Part 3's with the exercises) closed to other
-# users, so that a job's uid cannot read their sources or shaders; the grader, as root, still reads them.
+# The reference stages (each part's answer), extras/ (Part 3's with the exercises) and the TGA exercise's
+# reference PNGs (tests/fixtures/tga: t10-grade-tga copies the inputs in as root) closed to other users,
+# so that a job's uid cannot read the answers; the grader, as root, still reads them.
 closed=()
-for dir in "$checkout"/tutorial10_part[1-9]_* "$checkout/extras"; do
+for dir in "$checkout"/tutorial10_part[1-9]_* "$checkout/extras" "$checkout/tests/fixtures/tga"; do
     [ -d "$dir" ] || continue
     chmod go-rwx "$dir"
     closed+=("${dir#"$checkout"/}")

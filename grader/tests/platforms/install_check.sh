@@ -41,7 +41,7 @@ run() {
     log=$out/$1.log
     : > "$log"
     copy=$out/$1-checkout
-    mkdir -p "$copy/tutorial10_part0_start" "$copy/tutorial10_part3_gaussian" "$copy/extras" "$copy/common"
+    mkdir -p "$copy/tutorial10_part0_start" "$copy/tutorial10_part3_gaussian" "$copy/extras" "$copy/common" "$copy/tests/fixtures/tga"
     chmod 755 "$copy"/*
     cp "$checkout/Makefile" "$copy/Makefile"
     printf '%s\n' "$3" > "$out/$1.os-release"
@@ -74,9 +74,10 @@ expect jammy log "pip install --quiet --disable-pip-version-check cmake==3.31.6"
 expect jammy out "bubblewrap 0.6.1 is older than 0.8: the grader will run each job as its own uid"
 expect jammy log "--no-print-directory grader"
 expect jammy log "with cmake version 3.31.6"
-expect jammy out "closed to other users: tutorial10_part3_gaussian extras"
+expect jammy out "closed to other users: tutorial10_part3_gaussian extras tests/fixtures/tga"
 mode jammy tutorial10_part3_gaussian 700
 mode jammy extras 700
+mode jammy tests/fixtures/tga 700
 mode jammy tutorial10_part0_start 755
 mode jammy common 755
 
