@@ -129,6 +129,19 @@ def find_cycle(graph):
     return None
 
 
+def verdict(problems, graph, counted, fine):
+    """Adds every file cycle of graph to problems (report one, drop its last edge, look again), prints
+    them and the summary line; returns the exit status."""
+    while (cycle := find_cycle(graph)) is not None:
+        problems.append("cycle between files: " + " -> ".join(cycle) +
+                        " (each needs the other; move what both need into a unit below them)")
+        graph[cycle[-2]].discard(cycle[-1])
+    for problem in problems:
+        print(problem)
+    print(f"{counted}: " + (fine if not problems else f"{len(problems)} problems"))
+    return 1 if problems else 0
+
+
 def check_grader(grader, common):
     """The problems of the grader's includes (see the module's docstring)."""
     common_headers = {include_name(common, layer, path) for layer, path in code_files(common)
@@ -161,15 +174,7 @@ def check_grader(grader, common):
             other = pathlib.PurePosixPath(target).with_suffix("").as_posix()
             if other != unit:
                 graph.setdefault(unit, set()).add(other)
-    while (cycle := find_cycle(graph)) is not None:
-        problems.append("cycle between files: " + " -> ".join(cycle) +
-                        " (each needs the other; move what both need into a unit below them)")
-        graph[cycle[-2]].discard(cycle[-1])
-    for problem in problems:
-        print(problem)
-    print(f"{len(files)} files in the stages of {grader}: " +
-          ("stages respected, no cycle" if not problems else f"{len(problems)} problems"))
-    return 1 if problems else 0
+    return verdict(problems, graph, f"{len(files)} files in the stages of {grader}", "stages respected, no cycle")
 
 
 def main():
@@ -217,16 +222,7 @@ def main():
             other = pathlib.PurePath(target).stem
             if other != unit:
                 graph.setdefault(unit, set()).add(other)
-    # Every cycle: report one, drop its last edge, look again.
-    while (cycle := find_cycle(graph)) is not None:
-        problems.append("cycle between files: " + " -> ".join(cycle) +
-                        " (each needs the other; move what both need into a unit below them)")
-        graph[cycle[-2]].discard(cycle[-1])
-    for problem in problems:
-        print(problem)
-    print(f"{len(files)} files in the layers of {common}: " +
-          ("layers respected, no cycle" if not problems else f"{len(problems)} problems"))
-    return 1 if problems else 0
+    return verdict(problems, graph, f"{len(files)} files in the layers of {common}", "layers respected, no cycle")
 
 
 if __name__ == "__main__":
