@@ -3,6 +3,7 @@
 #include "intake/staging.hpp"
 
 #include "t10/error.hpp"
+#include "t10/fork_lock.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -10,6 +11,8 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
+#include <mutex>
+#include <shared_mutex>
 #include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -97,10 +100,13 @@ void makeDir(const fs::path& dir, uid_t owner, mode_t mode) {
     if (owner != 0 && ::chown(dir.c_str(), owner, owner) != 0) throw Error(dir.string() + ": chown: " + std::strerror(errno));
 }
 
-// Copies a file the grader owns. Its descriptors are close-on-exec: a descriptor open for writing
-// inherited by a process forked meanwhile by another job would make exec() of the copy fail with
-// "Text file busy" (std::filesystem::copy_file does not set O_CLOEXEC).
+// Copies a file the grader owns. A descriptor open for writing inherited by a process forked
+// meanwhile by another job would make exec() of the copy fail with "Text file busy": the descriptors
+// are close-on-exec (std::filesystem::copy_file does not set O_CLOEXEC), and no fork() happens while
+// the copy is open (t10::forkLock), since a child holds what it inherited until its exec.
 void copyFile(const fs::path& from, const fs::path& to, mode_t mode, uid_t owner) {
+    // No fork() while the copy is open for writing: a child forked meanwhile would hold it (fork_lock.hpp).
+    const std::shared_lock noFork(t10::forkLock());
     const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
     if (in < 0) throw Error(from.string() + ": cannot open: " + std::strerror(errno));
     const int out = ::open(to.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, mode);

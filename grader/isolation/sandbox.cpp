@@ -7,6 +7,7 @@
 #include "isolation/sandbox.hpp"
 
 #include "t10/error.hpp"
+#include "t10/fork_lock.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <grp.h>
 #include <pwd.h>
+#include <shared_mutex>
 #include <ostream>
 #include <sstream>
 #include <sys/prctl.h>
@@ -33,6 +35,17 @@
 namespace t10::grade {
 
 namespace {
+
+// fork() while no program file is open for writing (copyFile holds t10::forkLock shared while it
+// writes): the child inherits no descriptor that would make another job's exec fail with ETXTBSY.
+// The child's copy of the lock stays locked; it only execs or exits.
+pid_t forkAlone() {
+    std::shared_mutex& lock = t10::forkLock();
+    lock.lock();
+    const pid_t pid = ::fork();
+    if (pid != 0) lock.unlock();
+    return pid;
+}
 
 constexpr const char* kBwrap = "/usr/bin/bwrap";
 constexpr uid_t kInsideUid = 1000; // the uid the step sees inside the namespaces (never 0)
@@ -196,7 +209,7 @@ void killAllOfUid(uid_t uid) {
     for (;;) {
         // kill(-1) as the uid reaches every process of it, wherever it moved (setsid, double fork),
         // with no race on recycled pids.
-        const pid_t killer = ::fork();
+        const pid_t killer = forkAlone();
         if (killer == 0) {
             if (::setgroups(0, nullptr) != 0 || ::setresgid(uid, uid, uid) != 0 || ::setresuid(uid, uid, uid) != 0) _exit(1);
             ::kill(-1, SIGKILL);
@@ -437,7 +450,7 @@ RunResult runSandboxed(const SandboxRun& run, const std::vector<std::string>& ar
     planChild(run, argv, logFile, plan);
 
     const auto start = std::chrono::steady_clock::now();
-    const pid_t pid = ::fork();
+    const pid_t pid = forkAlone();
     if (pid < 0) {
         ::close(plan.log);
         throw Error(std::string("fork: ") + std::strerror(errno));
@@ -495,7 +508,7 @@ Unreachable firstUnreachable(uid_t uid, const std::vector<std::string>& paths) {
     for (const std::string& path : paths) copies.emplace_back(path.c_str(), path.c_str() + path.size() + 1);
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw Error(std::string("pipe: ") + std::strerror(errno));
-    const pid_t child = ::fork();
+    const pid_t child = forkAlone();
     if (child == 0) {
         if (::setgroups(0, nullptr) != 0 || ::setresgid(uid, uid, uid) != 0 || ::setresuid(uid, uid, uid) != 0) _exit(126);
         for (std::uint32_t i = 0; i < copies.size(); ++i) {
