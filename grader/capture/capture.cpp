@@ -115,7 +115,7 @@ RunResult runCase(const SandboxRun& base, const fs::path& program, const std::st
     run.mounts.push_back({dir.string(), "/out", true});
     run.workingDirectory = "/out";
     // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
-    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
+    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads), kLlvmpipeNoOptimisation,
                "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp),
                "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
     std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};

@@ -17,6 +17,12 @@ struct CaseSpec {
     int height;
 };
 
+// llvmpipe without LLVM's optimisation passes, for the reference's and every submission's renders:
+// the frames and buffers are bit-identical (every case of the three parts, Mesa 22.3 and 25), and for
+// renders this small compiling the shaders costs more than drawing, so a render takes about a third
+// less CPU time.
+inline constexpr const char* kLlvmpipeNoOptimisation = "GALLIVM_PERF=nopt";
+
 // The cases of Part `part` (1, 2 or 3), in the order they are rendered and reported.
 std::vector<CaseSpec> cases(int part);
 // A case's arguments with "{inputs}" replaced by the synthetic inputs' folder `inputs`.
