@@ -101,7 +101,7 @@ run: build
 # FLIP's venv (pip, mostly waiting on PyPI) while the C++ builds, then runs every test. The tests'
 # llvmpipe skips LLVM's optimisation passes (GALLIVM_PERF=nopt; the grader's renders always do): the
 # frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's small
-# renders spend more CPU compiling shaders than drawing.
+# renders spend more CPU compiling shaders than drawing them.
 test: PACKAGES += $(TEST_PACKAGES) python3-venv
 test: deps
 	@$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \

@@ -115,9 +115,10 @@ RunResult runCase(const SandboxRun& base, const fs::path& program, const std::st
     run.mounts.push_back({dir.string(), "/out", true});
     run.workingDirectory = "/out";
     // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
-    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads), kLlvmpipeNoOptimisation,
+    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
                "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp),
                "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
+    run.env.insert(run.env.end(), kLlvmpipeSmallRenders.begin(), kLlvmpipeSmallRenders.end());
     std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
     for (const std::string& a : caseArgs(args, run.path("/t10/inputs"))) argv.push_back(a);
     argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",

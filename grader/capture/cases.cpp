@@ -63,7 +63,8 @@ std::string renderReference(const std::string& referenceBinary, const std::strin
                             const std::string& inputsDir, int part) {
     // The reference renders are kept until the reference program or its shaders change, and used only
     // while their recorded hashes hold; the reference is trusted code and renders outside the sandbox.
-    std::string stamp = referenceBinary + " with a Mesa cache seed, " + kLlvmpipeNoOptimisation;
+    std::string stamp = referenceBinary + " with a Mesa cache seed";
+    for (const std::string& setting : kLlvmpipeSmallRenders) stamp += ", " + setting;
     stamp += std::to_string(fs::last_write_time(referenceBinary).time_since_epoch().count());
     for (const std::string& shader : shaders) stamp += readFile(stageDir + "/" + shader);
     const std::string referenceDir = (fs::absolute(cacheDir) / ("reference-" + stage + "-" + hashOf(stamp))).string();
@@ -81,7 +82,9 @@ std::string renderReference(const std::string& referenceBinary, const std::strin
         argv.insert(argv.end(), {"--dump", out, "--output", out + "/frame.png"});
         // Its compiled shaders seed each submission's own Mesa cache: most of a submission's shaders
         // are the reference's, and compiling them again costs more than the render.
-        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", {"MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed", kLlvmpipeNoOptimisation});
+        std::vector<std::string> environment = kLlvmpipeSmallRenders;
+        environment.push_back("MESA_SHADER_CACHE_DIR=" + temporary + "/mesa-seed");
+        const RunResult result = runLimited(argv, Limits{}, out + "/run.log", "", environment);
         if (!result.ok()) throw Error("the reference " + stage + " (" + spec.id + ") " + result.describe() + ":\n" + result.output);
     }
     writeManifest(temporary);

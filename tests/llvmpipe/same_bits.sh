@@ -1,30 +1,38 @@
 #!/usr/bin/env bash
-# make test and the grader run llvmpipe without LLVM's optimisation passes (GALLIVM_PERF=nopt: small
-# renders spend more CPU compiling shaders than drawing). That is only right while the results are the
-# same bits: this renders Part 3 (frame, every dumped buffer, every captured blur pass) both ways, with
-# Mesa's shader cache off so that neither way can load the other's compiled shaders, and fails on any
-# file that differs. A third render from another camera must differ from the first, so the comparison
-# is shown to see a difference. usage: same_bits.sh STAGE_BINARY OUT_DIR
+# make test runs llvmpipe without LLVM's optimisation passes (GALLIVM_PERF=nopt) and the grader renders
+# its small cases that way and with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128): for small frames
+# compiling the shaders costs more CPU than drawing them. That is only right while the results are the
+# same bits: this renders Part 3 (frame, every dumped buffer, every captured blur pass) the default way
+# and both of those, with Mesa's shader cache off so that no way can load another's compiled shaders,
+# and fails on any file that differs. A render from another camera must differ from the first, so the
+# comparison is shown to see a difference. usage: same_bits.sh STAGE_BINARY OUT_DIR
 set -u
 stage=$1 out=$2
-rm -rf "$out" && mkdir -p "$out/optimised" "$out/nopt" "$out/other" || exit 1
-render() { # render WAY DIR ARGS...
-    local way=$1 dir=$2
-    shift 2
-    if [ "$way" = nopt ]; then set -- env GALLIVM_PERF=nopt "$@"; else set -- env -u GALLIVM_PERF "$@"; fi
-    MESA_SHADER_CACHE_DISABLE=true "$@" --headless --backend egl --frames 1 --size 128x128 --dump "$dir" \
-        --output "$dir/frame.png" >"$dir.log" 2>&1 || { echo "FAIL: $way render exited $?:"; cat "$dir.log"; exit 1; }
+rm -rf "$out" && mkdir -p "$out" || exit 1
+render() { # render DIR ENV_SETTINGS... -- ARGS...
+    local dir=$1
+    shift
+    local settings=()
+    while [ "$1" != -- ]; do settings+=("$1"); shift; done
+    shift
+    mkdir -p "$dir"
+    env -u GALLIVM_PERF -u LP_NATIVE_VECTOR_WIDTH MESA_SHADER_CACHE_DISABLE=true "${settings[@]}" "$stage" --headless --backend egl \
+        --frames 1 --size 128x128 --dump "$dir" --output "$dir/frame.png" "$@" >"$dir.log" 2>&1 ||
+        { echo "FAIL: render into $dir (${settings[*]}) exited non-zero:"; cat "$dir.log"; exit 1; }
 }
-render optimised "$out/optimised" "$stage" --camera default --capture-passes "$out/optimised"
-render nopt "$out/nopt" "$stage" --camera default --capture-passes "$out/nopt"
-render optimised "$out/other" "$stage" --camera lights
+render "$out/default" -- --camera default --capture-passes "$out/default"
+render "$out/nopt" GALLIVM_PERF=nopt -- --camera default --capture-passes "$out/nopt"
+render "$out/grader" GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 -- --camera default --capture-passes "$out/grader"
+render "$out/other" -- --camera lights
 files=0 differ=0
 while IFS= read -r name; do
     files=$((files + 1))
-    cmp -s "$out/optimised/$name" "$out/nopt/$name" || { echo "FAIL: $name differs with GALLIVM_PERF=nopt"; differ=$((differ + 1)); }
-done < <(cd "$out/optimised" && find . -type f | sort)
-[ -f "$out/nopt/blur_pass10.pfm" ] || { echo "FAIL: no blur passes were captured"; exit 1; }
+    for way in nopt grader; do
+        cmp -s "$out/default/$name" "$out/$way/$name" || { echo "FAIL: $name differs in the $way render"; differ=$((differ + 1)); }
+    done
+done < <(cd "$out/default" && find . -type f | sort)
+[ -f "$out/grader/blur_pass10.pfm" ] || { echo "FAIL: no blur passes were captured"; exit 1; }
 [ "$files" -ge 20 ] || { echo "FAIL: only $files files to compare"; exit 1; }
-cmp -s "$out/optimised/frame.png" "$out/other/frame.png" && { echo "FAIL: another camera gave the same frame: the comparison sees nothing"; exit 1; }
+cmp -s "$out/default/frame.png" "$out/other/frame.png" && { echo "FAIL: another camera gave the same frame: the comparison sees nothing"; exit 1; }
 [ "$differ" -eq 0 ] || exit 1
-echo "$files files (frame, buffers, blur passes) identical with and without LLVM's optimisation passes"
+echo "$files files (frame, buffers, blur passes) identical by default, with GALLIVM_PERF=nopt, and with it and LP_NATIVE_VECTOR_WIDTH=128"
