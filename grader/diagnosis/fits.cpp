@@ -5,7 +5,7 @@
 
 namespace t10::grade {
 
-Fit fitParameter(const std::function<double(double)>& error, double low, double high, bool logScale, int grid) {
+Fit fitParameter(const std::function<double(double)>& error, double low, double high, bool logScale, int grid, int steps) {
     // Searched in t: the value itself, or its log.
     const auto value = [&](double t) { return logScale ? std::exp(t) : t; };
     const double t0 = logScale ? std::log(low) : low;
@@ -27,7 +27,7 @@ Fit fitParameter(const std::function<double(double)>& error, double low, double 
     double d = a + ratio * (b - a);
     double ec = error(value(c));
     double ed = error(value(d));
-    for (int i = 0; i < 22; ++i) {
+    for (int i = 0; i < steps; ++i) {
         if (ec < ed) {
             b = d;
             d = c;
