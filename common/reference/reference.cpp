@@ -250,11 +250,16 @@ Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double scene
     return out;
 }
 
+void colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey, std::vector<Rgb>& out) {
+    out.resize(std::size_t(in.accumulation.width) * in.accumulation.height);
+    std::size_t i = 0;
+    for (int y = 0; y < in.accumulation.height; ++y)
+        for (int x = 0; x < in.accumulation.width; ++x) out[i++] = frameColour(in, variant, sceneKey, x, y);
+}
+
 std::vector<Rgb> colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey) {
     std::vector<Rgb> out;
-    out.reserve(std::size_t(in.accumulation.width) * in.accumulation.height);
-    for (int y = 0; y < in.accumulation.height; ++y)
-        for (int x = 0; x < in.accumulation.width; ++x) out.push_back(frameColour(in, variant, sceneKey, x, y));
+    colours(in, variant, sceneKey, out);
     return out;
 }
 
@@ -270,6 +275,10 @@ Image8 toImage8(const std::vector<Rgb>& colours, int width, int height) {
 
 std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& variant) {
     return colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap));
+}
+
+void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out) {
+    colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap), out);
 }
 
 Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant) {

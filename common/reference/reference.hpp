@@ -140,6 +140,8 @@ struct FrameInputs {
 
 // Every pixel's colour under the variant before the 8-bit store, row by row (x fastest).
 std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& variant);
+// The same into `out`, whose memory is reused: for fits that evaluate hundreds of variants.
+void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out);
 // The frame under the variant, converted to 8 bits: finalFrame's result for the default variant.
 Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant);
 

@@ -358,8 +358,9 @@ using ref::FrameInputs;
 // What the fits minimise: the mean distance, in 8-bit steps, from the model's unrounded output to
 // the frame. Unlike the rounded error it changes smoothly with a constant, so the search does not
 // stall on the plateaus of the 8-bit store.
-double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame) {
-    const std::vector<ref::Rgb> colours = ref::frameColours(in, model);
+// `colours` is scratch memory the fits reuse from one evaluation to the next.
+double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame, std::vector<ref::Rgb>& colours) {
+    ref::frameColours(in, model, colours);
     const int w = in.accumulation.width;
     double sum = 0.0;
     for (int y = 0; y < in.accumulation.height; ++y)
@@ -378,6 +379,12 @@ double frameResidual(const FrameInputs& in, const FrameModel& model, const Image
 // give three significant digits.
 constexpr int kRoughFrameFitSteps = 16;
 constexpr int kFrameFitSteps = 12;
+
+// A model whose best smooth residual is above this many 8-bit steps cannot pass the frame's
+// tolerance, so its second stage is skipped: at a value that passes, every channel rounds to within
+// 1 step of the frame and 99 % or more to the same step (mean <= 0.01), so the unrounded output is
+// within 0.5 + 0.01 steps of the frame on average. The margin covers the rough stage's last step.
+constexpr double kFrameResidualCeiling = 0.75;
 
 // The second stage of a frame fit: the smooth residual finds the neighbourhood, the rounded 8-bit
 // error (what the tolerance judges) the value within 1 % of it. Constants the frame is very
@@ -714,10 +721,11 @@ void fitFrameConstantJointly(const ModelParameter& p, const std::vector<Check*>&
                 steps = f.steps;
             }
     const auto model = [&p](double v) { return withSetting(p.field, v); };
+    std::vector<ref::Rgb> scratch;
     const Fit rough = fitParameter(
         [&](double v) {
             double sum = 0.0;
-            for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame);
+            for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame, scratch);
             return sum;
         },
         *std::min_element(values.begin(), values.end()) * 0.5, *std::max_element(values.begin(), values.end()) * 2.0, true, 12,
@@ -1248,13 +1256,15 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
     for (int l = 0; l < state.dump.luminanceLevels(); ++l) levels.push_back(state.dump.level(kLuminanceUnit, l));
     const FrameInputs withLevels{state.acc, state.gpuKey, bloom, &levels};
     const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(ref::finalFrame(withLevels, m), state.dump.frame); };
+    std::vector<ref::Rgb> scratch;
     for (const DiscreteModel& d : frameDiscreteModels(state.part, int(levels.size())))
         if (!names(check, d.id) && frameWithin(frameError(d.model))) name(check, d.id, d.steps, d.value);
     for (const ModelParameter& p : kFrameParameters) {
         if (state.part < p.firstPart) continue;
         const auto model = [&p](double v) { return withSetting(p.field, v); };
-        const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), state.dump.frame); }, p.low,
-                                       p.high, true, 16, kRoughFrameFitSteps);
+        const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), state.dump.frame, scratch); },
+                                       p.low, p.high, true, 16, kRoughFrameFitSteps);
+        if (rough.error > kFrameResidualCeiling) continue;
         const Fit fit = refineFrameFit(rough.value, [&](double v) {
             const auto e = frameError(model(v));
             return e.mean + e.fractionOverOne;
