@@ -97,15 +97,29 @@ run: build
 	    done; \
 	fi
 
-# make test installs every package in one apt-get run (python3-venv for FLIP's venv too), then makes
-# FLIP's venv (pip, mostly waiting on PyPI) while the C++ builds, then runs every test. The tests'
-# llvmpipe skips LLVM's optimisation passes (GALLIVM_PERF=nopt; the grader's renders always do): the
-# frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's small
-# renders spend more CPU compiling shaders than drawing them.
-test: PACKAGES += $(TEST_PACKAGES) python3-venv
+# make test installs what the build needs first (with Catch2, which turns the tests on, and python3-venv
+# for FLIP's venv); then, while the C++ builds, apt-get installs what only the tests run (TEST_PACKAGES,
+# its output in $(BUILD)/test-packages.log) and pip makes FLIP's venv, both mostly waiting on the
+# network and dpkg; then CMake configures again, finding the programs installed meanwhile (xvfb-run,
+# jekyll, chromium), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
+# (GALLIVM_PERF=nopt; the grader's renders always do): the frames are bit-identical (the test
+# "llvmpipe: ... the same bits" checks it) and the suite's small renders spend more CPU compiling
+# shaders than drawing them.
+test: PACKAGES += catch2 python3-venv
 test: deps
-	@$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \
-	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; exit $$built
+	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
+	if [ -n "$$missing" ]; then \
+	    [ -z "$(SUDO)" ] || $(SUDO) true || exit 1; \
+	    mkdir -p $(BUILD); echo "Installing Debian packages while building (log: $(BUILD)/test-packages.log):" $$missing; \
+	    $(MAKE) --no-print-directory deps PACKAGES="$$missing" >$(BUILD)/test-packages.log 2>&1 & packages=$$!; \
+	fi; \
+	$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \
+	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; \
+	if [ -n "$$missing" ] && ! wait $$packages; then \
+	    tail -n 20 $(BUILD)/test-packages.log; echo "make test: installing $$missing failed (log: $(BUILD)/test-packages.log)"; exit 1; \
+	fi; \
+	[ $$built -eq 0 ] || exit $$built; \
+	if [ -n "$$missing" ]; then cmake $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS); fi
 	cd $(BUILD) && GALLIVM_PERF=nopt ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 bless: build
