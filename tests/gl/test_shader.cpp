@@ -39,7 +39,7 @@ TEST_CASE("a valid program compiles and links", "[shader]") {
     const auto dir = scratch("valid");
     write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "Ok.frag", "#version 430 core\nout vec4 c;\nvoid main() { c = vec4(1); }\n");
-    t10::ShaderManager shaders({dir});
+    t10::ShaderManager shaders({dir.string()});
     const GLuint program = shaders.createProgram({"Ok.vert", "Ok.frag"});
     CHECK(program != 0);
     glDeleteProgram(program);
@@ -52,9 +52,9 @@ TEST_CASE("earlier folders win over later ones", "[shader]") {
     write(first / "Ok.frag", "// override\n");
     write(dir / "Ok.frag", "// fallback\n");
     write(dir / "Ok.vert", "// only in the later folder\n");
-    t10::ShaderManager shaders({first, dir});
-    CHECK(shaders.find("Ok.frag") == first / "Ok.frag");
-    CHECK(shaders.find("Ok.vert") == dir / "Ok.vert");
+    t10::ShaderManager shaders({first.string(), dir.string()});
+    CHECK(shaders.find("Ok.frag") == (first / "Ok.frag").string());
+    CHECK(shaders.find("Ok.vert") == (dir / "Ok.vert").string());
 }
 
 TEST_CASE("a compile error names the file and quotes the driver log", "[shader]") {
@@ -62,7 +62,7 @@ TEST_CASE("a compile error names the file and quotes the driver log", "[shader]"
     const auto dir = scratch("compile");
     write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "Broken.frag", "#version 430 core\nout vec4 c;\nvoid main() { c = not_declared; }\n");
-    t10::ShaderManager shaders({dir});
+    t10::ShaderManager shaders({dir.string()});
     try {
         shaders.createProgram({"Ok.vert", "Broken.frag"});
         FAIL("no error");
@@ -79,7 +79,7 @@ TEST_CASE("a link error names the files", "[shader]") {
     const auto dir = scratch("link");
     write(dir / "Ok.vert", "#version 430 core\nlayout(location = 0) in vec2 p;\nvoid main() { gl_Position = vec4(p, 0, 1); }\n");
     write(dir / "NoMain.frag", "#version 430 core\nout vec4 c;\nvoid helper() { c = vec4(0); }\n");
-    t10::ShaderManager shaders({dir});
+    t10::ShaderManager shaders({dir.string()});
     CHECK_THROWS_WITH(shaders.createProgram({"Ok.vert", "NoMain.frag"}), Catch::Contains("program link failed"));
 }
 
@@ -92,7 +92,7 @@ TEST_CASE("a missing shader lists every folder searched", "[shader]") {
 TEST_CASE("an unknown extension is an error, not a guess", "[shader]") {
     const auto dir = scratch("unknown");
     write(dir / "Odd.glsl", "void main() {}\n");
-    t10::ShaderManager shaders({dir});
+    t10::ShaderManager shaders({dir.string()});
     context();
     CHECK_THROWS_WITH(shaders.createProgram({"Odd.glsl"}), Catch::Contains("unknown shader stage"));
 }

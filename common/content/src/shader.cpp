@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <vector>
 
 namespace t10 {
@@ -48,13 +49,13 @@ std::string programLog(GLuint program) {
 
 } // namespace
 
-ShaderManager::ShaderManager(std::vector<std::filesystem::path> searchDirs) : dirs_(std::move(searchDirs)) {}
+ShaderManager::ShaderManager(std::vector<std::string> searchDirs) : dirs_(std::move(searchDirs)) {}
 
-std::filesystem::path ShaderManager::find(const std::string& fileName) const {
+std::string ShaderManager::find(const std::string& fileName) const {
     std::string tried;
-    for (const auto& dir : dirs_) {
-        const std::filesystem::path candidate = dir / fileName;
-        if (std::filesystem::is_regular_file(candidate)) return candidate;
+    for (const std::string& dir : dirs_) {
+        const std::filesystem::path candidate = std::filesystem::path(dir) / fileName;
+        if (std::filesystem::is_regular_file(candidate)) return candidate.string();
         tried += "\n  " + candidate.string();
     }
     throw Error(fileName + ": shader not found; looked for" + tried);

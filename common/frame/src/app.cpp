@@ -43,8 +43,8 @@ std::string glString(GLenum name) {
     return text != nullptr ? text : "?";
 }
 
-std::vector<std::filesystem::path> shaderSearchPath(const Stage& stage, const SceneSettings& scene) {
-    std::vector<std::filesystem::path> dirs;
+std::vector<std::string> shaderSearchPath(const Stage& stage, const SceneSettings& scene) {
+    std::vector<std::string> dirs;
     if (!scene.shaderDir.empty()) dirs.emplace_back(scene.shaderDir);
     dirs.emplace_back(stage.shaderDir);
     dirs.emplace_back(T10_COMMON_SHADER_DIR);

@@ -4,7 +4,6 @@
 #pragma once
 #include "t10/gl.hpp"
 
-#include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -13,10 +12,13 @@ namespace t10 {
 
 class ShaderManager {
 public:
-    explicit ShaderManager(std::vector<std::filesystem::path> searchDirs);
+    // Folders as strings (as common/ passes paths everywhere), not std::filesystem::path: this header
+    // is in every stage's includes, and <filesystem> was a third of a stage's compile time, which
+    // every build of a submission pays.
+    explicit ShaderManager(std::vector<std::string> searchDirs);
 
     // Resolves a file name against the search folders; throws t10::Error naming every folder tried.
-    std::filesystem::path find(const std::string& fileName) const;
+    std::string find(const std::string& fileName) const;
 
     // Compiles each file (stage from the extension: .vert .frag .geom .comp .tesc .tese) and links
     // them. Returns a raw program name that the caller deletes with glDeleteProgram, as the
@@ -26,7 +28,7 @@ public:
 
 
 private:
-    std::vector<std::filesystem::path> dirs_;
+    std::vector<std::string> dirs_;
 };
 
 } // namespace t10
