@@ -14,12 +14,13 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
             nlohmann-json3-dev libimgui-dev
 # What `make test` needs on top: every program a test runs (time: tests/reliability/measure.sh runs
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
-# xauth: the window tests; nodejs: the platform tests run GitHub Classroom's released grading reporter,
-# tests/fixtures/classroom-reporter; the site's tools and fonts) and Catch2. `make run` installs none of them.
+# xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
+# tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter; the
+# site's tools and fonts) and Catch2. `make run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
-TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml nodejs \
+TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs \
                  jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -52,9 +53,10 @@ help:
 	@echo "make gradescope PART=1|2|3  package a Gradescope autograder into $(OUT)/gradescope/partN/autograder.zip"
 	@echo "make prairielearn PART=1|2|3  write a PrairieLearn external grader into $(OUT)/prairielearn/partN/"
 	@echo "make student PART=1|2|3  start your own version of a part in $(STUDENT_DIR)/partN/ (never overwrites)"
-	@echo "make check PART=1|2|3 [DIR=folder]  build your part, grade it, say what to fix first (exit 0 only at 100)"
+	@echo "make check PART=1|2|3 [DIR=folder] [ISOLATION=none]  build your part, grade it, say what to fix first (exit 0 only at 100)"
 	@echo "make run STAGE=student_partN  run your part (window, or headless into $(OUT)/); any stage name works"
 	@echo "make distro-check DISTRO=bookworm|trixie [MODES=\"root user\"] [TARGETS=\"run test\"]  make run and make test (or TARGETS) in a fresh Debian root (mmdebstrap, $(BUILD)/distro-check/)"
+	@echo "make devcontainer-packages  print the Debian packages the dev container's image installs (.devcontainer/Dockerfile)"
 	@echo "make windows-check  cross-build for Windows (MinGW-w64) and run the goldens, unit and GL tests under Wine ($(BUILD)/windows/)"
 	@echo "make help   this list"
 
@@ -284,6 +286,9 @@ check-args:
 	@dir="$(or $(DIR),$(STUDENT_DIR)/part$(PART))"; [ -d "$$dir" ] || { \
 	    echo "make check: $$dir/: no such folder (make student PART=$(PART) creates $(STUDENT_DIR)/part$(PART)/)"; exit 2; }
 
+# ISOLATION=none grades without the sandbox, for a student's own code on a machine that refuses it
+# (a container started with Docker's defaults: tools/check/check.sh says so and what to do).
+ISOLATION ?=
 # The student's program is built by its own target first (when the build has found the folder), so that
 # a compile error shows with the project's flags and names the file and line; then t10-grade grades it.
 check: check-args build grade-deps
@@ -295,7 +300,7 @@ check: check-args build grade-deps
 	        echo "make check: $$dir/ does not build: fix the first error above (file:line), then make check PART=$(PART) again"; \
 	        echo "(the compiler's whole output: $(BUILD)/student-build.log)"; exit 1; }; \
 	fi; \
-	tools/check/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir"
+	tools/check/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir" $(ISOLATION)
 
 # make run STAGE=name: one stage, reference or student, in a window or headless into $(OUT)/name.png.
 run-stage:
@@ -347,6 +352,14 @@ prairielearn: platform-part
 distro-check: PACKAGES := mmdebstrap
 distro-check: deps
 	tools/distro_check/distro_check.sh "$(DISTRO)" "$(or $(MODES),root user)" . $(BUILD)/distro-check "$(or $(TARGETS),run test)"
+
+# The dev container (.devcontainer/: GitHub Codespaces, VS Code's Dev Containers): its Dockerfile
+# installs what devcontainer-packages prints, the lists above (the build's, make test's with Catch2 and
+# FLIP's venv), so that they live here only.
+DEVCONTAINER_PACKAGES := $(sort $(PACKAGES) catch2 python3-venv $(TEST_PACKAGES))
+.PHONY: devcontainer-packages
+devcontainer-packages:
+	@echo $(DEVCONTAINER_PACKAGES)
 
 # Windows, proven here (tools/windows_check/): the project cross-compiled with Debian's MinGW-w64
 # (GLFW, Imath, OpenEXR, Catch2 built from Debian's source packages into $(BUILD)/windows-deps/, once),
