@@ -369,7 +369,14 @@ def check_secrets():
     for path in glob.glob(os.path.join(REPORTS, "**"), recursive=True):
         if os.path.isfile(path):
             data = open(path, "rb").read()
+            binary = path.endswith(".png")
             for what, secret in secrets_to_find.items():
+                # A short secret (a hostname such as "vm") occurs by chance in compressed image data: a
+                # PNG of 100 kB holds a given 2-byte string almost surely. In images only secrets of 8
+                # bytes or more are looked for (a chance match then has odds of about 2^-64 a place);
+                # a leak through the program's output still shows in the text files, searched for all.
+                if binary and len(secret) < 8:
+                    continue
                 if secret.encode() in data:
                     fail(f"the {what} secret appears in {os.path.relpath(path, REPORTS)}")
     print(f"ok   no planted secret ({', '.join(secrets_to_find)}) in any file of the reports")
