@@ -15,12 +15,13 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # What `make test` needs on top: every program a test runs (time: tests/reliability/measure.sh runs
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
-# tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter; the
+# tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter;
+# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; the
 # site's tools and fonts) and Catch2. `make run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
-TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs \
+TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools \
                  jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 

@@ -1,0 +1,54 @@
+// The GLSL 4.30 -> GLSL ES 3.00 translator of the browser build: the stages keep their desktop shader
+// files, and the web ShaderManager runs each one through translateToGlslEs() before compiling it with
+// WebGL2. GL-free (unit-tested in the native build). It reads student files, so any input gives either
+// a translation or a t10::Error naming the file, the line and the construct.
+//
+// What it does (glsl_es.cpp has the details):
+// - `#version 430 core` -> `#version 300 es` and default precisions (highp float, int and samplers);
+//   every other line keeps its line number, so the browser's compile log points into the file.
+//   Comments become spaces.
+// - `layout(binding = N)` leaves sampler uniforms and uniform blocks (reported in samplerBindings and
+//   blockBindings); `layout(location = N)` leaves plain uniforms (uniformLocations) and the varyings
+//   between the stages (ES matches those by name); vertex inputs and fragment outputs keep theirs. A
+//   uniform block without a packing layout gets std140 (ES would make it `shared`, whose offsets the
+//   host would have to query; std140 is the layout the C++ structs follow).
+// - Subroutines become plain functions, an int uniform per subroutine uniform (subroutineUniforms) and
+//   a function under the subroutine uniform's name that calls the function whose index the int holds.
+// - An integer literal passed as a texture function's bias or level of detail becomes a float literal
+//   (GLSL 4.30 converts it implicitly; ES 3.00 has no implicit conversions).
+// - What has no ES 3.00 form (compute, images, buffers, doubles, ...) is an error, never dropped.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace t10 {
+
+struct GlslEsBinding {
+    std::string name; // as declared in the translated source (an array: its name)
+    int value;
+};
+
+struct GlslEsSubroutineUniform {
+    int location;            // the subroutine uniform's layout(location = L)
+    std::string uniformName; // the `uniform int` declared for it: holds the chosen layout(index = N)
+};
+
+struct GlslEsShader {
+    std::string source;                              // GLSL ES 3.00, same line numbers as the input
+    std::vector<GlslEsBinding> samplerBindings;      // sampler uniform -> texture unit (arrays: one per element, "name[i]")
+    std::vector<GlslEsBinding> blockBindings;        // uniform block (its block name) -> binding point
+    std::vector<GlslEsBinding> uniformLocations;     // uniform -> explicit location (an array: its first location; element i at value + i)
+    std::vector<GlslEsSubroutineUniform> subroutineUniforms;
+};
+
+enum class GlslStage { Vertex, Fragment, Compute, Other };
+
+// The largest source accepted, in bytes (the course's largest shader is under 10 KiB).
+constexpr std::size_t kGlslEsMaxSourceBytes = 1u << 20;
+
+// Throws t10::Error "FILE:LINE: <construct> cannot be translated to GLSL ES 3.00 (<why>)" (or another
+// "FILE:LINE: ..." message for malformed input).
+GlslEsShader translateToGlslEs(std::string_view source, const std::string& fileName, GlslStage stage);
+
+} // namespace t10
