@@ -95,7 +95,8 @@ def start_server(root):
 # --- Chromium over the DevTools pipe -----------------------------------------------------------
 
 class Browser:
-    def __init__(self, chromium, profile, log_path, deadline):
+    # gpu_args: how Chromium draws; the web stages' tests (tests/web/) pass WebGL flags instead.
+    def __init__(self, chromium, profile, log_path, deadline, gpu_args=("--disable-gpu",)):
         self.deadline = deadline
         to_chrome_r, self.to_chrome = os.pipe()
         self.from_chrome, from_chrome_w = os.pipe()
@@ -106,7 +107,7 @@ class Browser:
             os.dup2(b, 4)
 
         self.log = open(log_path, "w")
-        args = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--remote-debugging-pipe",
+        args = [chromium, "--headless", "--no-sandbox", *gpu_args, "--remote-debugging-pipe",
                 f"--user-data-dir={profile}", "--no-first-run", "--no-default-browser-check",
                 "--disable-extensions", "--disable-background-networking", "--disable-component-update",
                 "--disable-sync", "--disable-default-apps", "--disable-dev-shm-usage", "--mute-audio",

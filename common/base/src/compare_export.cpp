@@ -21,7 +21,7 @@
 
 namespace {
 
-constexpr int kSlots = 3;
+constexpr int kSlots = 4;
 constexpr int kLargestImage = 8192 * 8192 * 4; // bytes; a canvas larger than this is not compared
 
 std::array<std::vector<std::uint8_t>, kSlots>& buffers() {

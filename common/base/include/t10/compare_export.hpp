@@ -6,8 +6,10 @@
 
 extern "C" {
 
-// A buffer of `bytes` bytes inside the module that the page may fill (slot 0: the reference frame,
-// 1: the student's frame, 2: the heat-map the comparison writes). Returns null for a bad slot or size.
+// A zeroed buffer of `bytes` bytes inside the module that the page fills (slot 0: the reference frame,
+// 1: the student's frame, 2: the heat-map the comparison writes, 3: text, such as the tolerance file's
+// NUL-terminated path). Returns null for a bad slot or size. The page needs no runtime helper
+// (ccall, string conversion), which emscripten versions include differently.
 std::uint8_t* t10_compare_buffer(int slot, int bytes);
 
 // Compares two RGBA images of width x height, rows in the same order, held in slots 0 (expected)

@@ -1,0 +1,48 @@
+# The compare page of a student's web build (`make web STAGE=student_partN`, then
+# out/web/student_partN/index.html?compare=1): the student's frame beside the reference part's, the
+# difference heat-map and the golden test's verdict with its tolerance.
+#
+# t10_web_compare(<target> <folder>), called for each student stage of the web build
+# (cmake/T10Student.cmake):
+#   - which part the folder is: its name (partN, as `make student PART=N` names it), else its
+#     Tutorial10.cpp's header line "Tutorial 10, Part N" (make student writes it); the reference is
+#     then the Nth of T10_GOLDEN_STAGES, and its tests/golden/<reference>.tolerance is packaged at
+#     /t10/compare/reference.tolerance;
+#   - the golden comparison itself (t10_compare_export: common/base compare.cpp behind C functions)
+#     linked in, so the page judges with the tests' code;
+#   - common/base/src/compare_page.js as --post-js (it acts only with ?compare=1) and a --pre-js
+#     naming the reference (t10CompareReference).
+# A folder whose part cannot be told still builds; its compare page says why it has no reference.
+function(t10_web_compare target folder)
+    get_filename_component(name ${folder} NAME)
+    set(part "")
+    if(name MATCHES "^part([1-3])")
+        set(part ${CMAKE_MATCH_1})
+    elseif(EXISTS ${folder}/Tutorial10.cpp)
+        file(STRINGS ${folder}/Tutorial10.cpp header LIMIT_COUNT 5 REGEX "Tutorial 10, Part [1-3]")
+        if(header MATCHES "Tutorial 10, Part ([1-3])")
+            set(part ${CMAKE_MATCH_1})
+        endif()
+    endif()
+    set(reference "")
+    if(part)
+        list(GET T10_GOLDEN_STAGES ${part} reference)
+    endif()
+    set(config ${PROJECT_BINARY_DIR}/compare/${target}.pre.js)
+    file(CONFIGURE OUTPUT ${config} CONTENT
+         "// Written by cmake/T10WebCompare.cmake: the reference stage ${target}'s compare page loads.\nvar t10CompareReference = \"@reference@\";\n"
+         @ONLY)
+    target_link_libraries(${target} PRIVATE t10_compare_export)
+    target_link_options(${target} PRIVATE
+        "SHELL:--pre-js ${config}"
+        "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/base/src/compare_page.js")
+    set(depends ${config} ${PROJECT_SOURCE_DIR}/common/base/src/compare_page.js)
+    if(reference)
+        set(tolerance ${PROJECT_SOURCE_DIR}/tests/golden/${reference}.tolerance)
+        target_link_options(${target} PRIVATE "SHELL:--preload-file ${tolerance}@/t10/compare/reference.tolerance")
+        list(APPEND depends ${tolerance})
+    else()
+        message(WARNING "${folder}: the web compare page has no reference: name the folder partN (N = 1, 2, 3)")
+    endif()
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${depends})
+endfunction()
