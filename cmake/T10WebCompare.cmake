@@ -16,7 +16,7 @@
 function(t10_web_compare target folder)
     get_filename_component(name ${folder} NAME)
     set(part "")
-    if(name MATCHES "^part([1-3])")
+    if(name MATCHES "(^|_)part([1-3])($|_)")
         set(part ${CMAKE_MATCH_1})
     elseif(EXISTS ${folder}/Tutorial10.cpp)
         file(STRINGS ${folder}/Tutorial10.cpp header LIMIT_COUNT 5 REGEX "Tutorial 10, Part [1-3]")

@@ -211,9 +211,8 @@ class Page:
         return frame["width"], frame["height"]
 
     def screenshot(self, path):
-        shot = self.browser.send("Page.captureScreenshot", {"format": "png"}, self.session, timeout=60)
-        with open(path, "wb") as f:
-            f.write(base64.b64decode(shot["data"]))
+        """The whole page, as a reader scrolling it would see it."""
+        browser_test.screenshot(self.browser, self.session, path, 1400, 1000)
 
 
 def page_folder(args, stage):
