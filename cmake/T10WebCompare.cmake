@@ -46,3 +46,41 @@ function(t10_web_compare target folder)
     endif()
     set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${depends})
 endfunction()
+
+# t10_web_compare_test_students(): the two student stages the browser tests judge with their compare
+# pages (tests/web/web_tests.cmake): copies of tutorial10_part1_tonemap/ made at configure time in
+# <build>/compare-test-students/, one with a planted mistake (the tone map's white point Yw 1.0 instead
+# of 0.22, step 9: a student's typo), one unchanged. They are built as students' folders are (not part
+# of `all`); the target t10_web_compare_test_students builds both.
+function(t10_web_compare_test_students)
+    set(reference ${PROJECT_SOURCE_DIR}/tutorial10_part1_tonemap)
+    set(root ${PROJECT_BINARY_DIR}/compare-test-students)
+    set(files Tutorial10.cpp PostProcess.frag PostProcessInit.frag)
+    set(targets "")
+    foreach(kind fixed planted)
+        set(folder ${root}/t10test_${kind}_part1)
+        file(MAKE_DIRECTORY ${folder})
+        foreach(file IN LISTS files)
+            set(source ${reference}/${file})
+            if(kind STREQUAL planted AND file STREQUAL PostProcess.frag)
+                file(READ ${source} text)
+                set(right "const float fYwhite = 0.22f;")
+                string(FIND "${text}" "${right}" at)
+                if(at EQUAL -1)
+                    message(FATAL_ERROR "${source}: '${right}' not found: the compare test's planted mistake "
+                                        "(cmake/T10WebCompare.cmake) needs another line")
+                endif()
+                string(REPLACE "${right}" "const float fYwhite = 1.0f;" text "${text}")
+                set(source ${root}/planted-${file})
+                file(WRITE ${source} "${text}")
+            endif()
+            # Copied only when changed, so that the stage is not relinked at every configure.
+            file(COPY_FILE ${source} ${folder}/${file} ONLY_IF_DIFFERENT)
+        endforeach()
+        t10_add_student_stage(t10test_${kind}_part1 ${folder})
+        list(APPEND targets student_t10test_${kind}_part1)
+    endforeach()
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${reference}/Tutorial10.cpp
+                 ${reference}/PostProcess.frag ${reference}/PostProcessInit.frag)
+    add_custom_target(t10_web_compare_test_students DEPENDS ${targets})
+endfunction()
