@@ -145,14 +145,19 @@ bench-passes: deps
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).
 .PHONY: site site-serve
+# make site installs the site's own tools (a build configured before they were installed looks again);
+# chromium measures the web stages' first frames when make web has built them ($(OUT)/web/).
+SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+site site-serve: PACKAGES += $(SITE_PACKAGES)
 site: configure
+	@! grep -Eq '^T10_(JEKYLL|CHROMIUM):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site
 
 # site-serve rebuilds the site only when something it is made from (site/, the programs in $(BIN)/)
 # is newer than its index.html, then execs the server, so that stopping make stops the server too.
 site-serve: configure
 	@index=$(BUILD)/site/index.html; \
-	if [ ! -f $$index ] || [ -n "$$(find site $(BIN) -newer $$index -print -quit 2>/dev/null)" ]; then \
+	if [ ! -f $$index ] || [ -n "$$(find site $(BIN) $(OUT)/web -newer $$index -print -quit 2>/dev/null)" ]; then \
 	    cmake --build $(BUILD) --target site || exit 1; \
 	else echo "$(BUILD)/site is up to date"; fi; \
 	port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \

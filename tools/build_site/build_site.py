@@ -10,8 +10,10 @@
    - the golden-image settings and tolerances           -> _data/goldens.json
    - the images the pages show, rendered by the stages  -> assets/images/
    - KaTeX (Debian's libjs-katex and fonts-katex)        -> assets/katex/
+   - the web stages' sizes and first-frame times         -> _data/web.json (web_stages.py)
 3. Checks every excerpt and figure the pages ask for exists (an error names the page and line).
 4. Runs `jekyll build` into the destination and fails on any warning it prints.
+5. Copies the web stages (make web: out/web/<stage>/), when built, into the destination's web/.
 
 Nothing is written into the source tree. Usage: see --help; site/CMakeLists.txt has the calls.
 """
@@ -29,12 +31,14 @@ import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "markers"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import markers  # noqa: E402
+import web_stages  # noqa: E402
 
 IMAGE_SIZE = "1280x720"
 # Files of site/ that are tooling, not pages.
 NOT_PAGES = {"tools", "tests", "CMakeLists.txt", "README.md", "_site", ".jekyll-cache", "__pycache__"}
-INCLUDE = re.compile(r"\{%-?\s*include\s+(?P<name>excerpt|figure|derived)\.html\s+(?P<args>.*?)\s*-?%\}")
+INCLUDE = re.compile(r"\{%-?\s*include\s+(?P<name>excerpt|figure|derived|live)\.html\s+(?P<args>.*?)\s*-?%\}")
 # Figures computed from rendered frames by make_figure (tools/figures): name -> (mode, arguments,
 # the renders it reads as (stage, camera, extra)). Crops are of the 1280x720 frames, X Y W H from the
 # top left, enlarged 4 times; heat-maps reach white where a stage adds 128 levels of luma.
@@ -455,7 +459,7 @@ def check_includes(includes, excerpts, steps, stage_names):
             elif not optional:
                 problems.append(f"{where}: derived figure '{image}' needs a stage that does not exist")
             continue
-        if name == "figure":
+        if name in ("figure", "live"):  # live.html shows the stage's still frame too
             if not stage and args.get("step", "") in steps:
                 stage = steps[args["step"]]["stage"]
             if not stage:
@@ -547,6 +551,8 @@ def main():
                          "instead of running the binaries (tests)")
     ap.add_argument("--katex", default="/usr/share/javascript/katex", help="KaTeX distribution")
     ap.add_argument("--jekyll", default="jekyll", help="jekyll executable")
+    ap.add_argument("--web", help="the web stages (make web: out/web), copied into the site when built")
+    ap.add_argument("--web-measurements", help="measure_web.py's JSON: the time to each web stage's first frame")
     args = ap.parse_args()
 
     started = time.monotonic()
@@ -578,6 +584,7 @@ def main():
         "steps.json": steps,
         "diffs.json": stage_diffs(stages),
         "goldens.json": goldens(source_root, names),
+        "web.json": web_stages.web_data(args.web and os.path.abspath(args.web), names, args.web_measurements, log),
     }
     if not pygments_highlight:
         log("note: python3-pygments is not installed, so the diffs are coloured by line only")
@@ -618,6 +625,8 @@ def main():
     jekyll_started = time.monotonic()
     output = jekyll_build(args.jekyll, work, dest)
     log(f"jekyll build: {time.monotonic() - jekyll_started:.1f} s, no warnings")
+    if args.web:
+        web_stages.copy_stages(os.path.abspath(args.web), names, dest)
     if os.environ.get("T10_SITE_VERBOSE"):
         print(output)
     log(f"site written to {dest} in {time.monotonic() - started:.1f} s")
@@ -626,6 +635,6 @@ def main():
 if __name__ == "__main__":
     try:
         main()
-    except (SiteError, markers.MarkerError) as e:
+    except (SiteError, markers.MarkerError, web_stages.WebError) as e:
         print(f"[site] error: {e}", file=sys.stderr)
         sys.exit(1)
