@@ -14,7 +14,8 @@ Loads the built tutorial page with ?live=all (every embed starts), served from 1
     settings draw the same frame, so a difference comes from the setting);
   - with WebGL switched off (--disable-3d-apis) every embed says the browser has no WebGL2 and keeps
     its still picture, and no embed starts.
-Writes screenshots: each embed running (live-<stage>.png),
+Writes screenshots: the table of download sizes and first-frame times (live-costs.png), each embed
+running (live-<stage>.png),
 the exercises' embed after each change (live-<stage>-<name>-<value>.png) and the page without WebGL
 (live-no-webgl.png).
 
@@ -169,13 +170,13 @@ def element_clip(browser, session, selector):
     return box
 
 
-def open_page(browser, url):
+def open_page(browser, url, width):
     target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
     session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
     for domain in ("Page", "Runtime"):
         browser.send(f"{domain}.enable", {}, session)
     browser.send("Emulation.setDeviceMetricsOverride",
-                 {"width": 1280, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+                 {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
     browser.send("Page.navigate", {"url": url}, session)
     browser.wait_event("Page.loadEventFired", session, timeout=60)
     return target, session
@@ -276,13 +277,13 @@ def check_controls(browser, session, stage, need, changes, tries, min_changed, o
     return problems
 
 
-def check_no_webgl(chromium, site_url, profile_root, out, timeout):
+def check_no_webgl(chromium, site_url, profile_root, out, timeout, width):
     """Without WebGL every embed keeps its picture and says why; nothing starts."""
     browser = Browser(chromium, tempfile.mkdtemp(dir=profile_root), os.path.join(out, "chromium-no-webgl.log"),
                       time.monotonic() + timeout, gpu_args=("--disable-gpu", "--disable-3d-apis"))
     problems = []
     try:
-        _, session = open_page(browser, site_url)
+        _, session = open_page(browser, site_url, width)
         current = wait_until(browser, session, lambda c: all(s["state"] != "idle" or not s["src"] for s in c),
                              timeout / 2, "the embeds did not notice the missing WebGL")
         for s in current:
@@ -315,6 +316,8 @@ def main():
                     help="a setting that must draw a frame through its control (no difference needed: r16f)")
     ap.add_argument("--min-changed", type=float, default=0.002, help="share of pixels a change must alter")
     ap.add_argument("--timeout", type=float, default=240)
+    ap.add_argument("--width", type=int, default=1280,
+                    help="the window's width: the embeds render at their width (a narrower window draws fewer pixels)")
     args = ap.parse_args()
 
     names = [n for n in args.stages.split(",") if n]
@@ -335,9 +338,13 @@ def main():
     try:
         browser = Browser(args.chromium, tempfile.mkdtemp(dir=profile_root), os.path.join(args.out, "chromium.log"),
                           started + args.timeout, gpu_args=WEBGL_ARGS)
-        _, session = open_page(browser, url + "?live=all")
+        _, session = open_page(browser, url + "?live=all", args.width)
         found, shown = check_running(browser, session, built, args.site, args.out, args.timeout * 0.5)
         problems += found
+        if evaluate(browser, session, "!!document.getElementById('live-costs')"):
+            screenshot(browser, session, os.path.join(args.out, "live-costs.png"), element_clip(browser, session, "#live-costs"))
+        else:
+            problems.append("the page does not state the web stages' download sizes (#live-costs)")
         if args.controls_stage in built and shown.get(args.controls_stage, {}).get("state") == "rendered":
             problems += check_controls(browser, session, args.controls_stage, args.need, args.change,
                                        args.tries, args.min_changed, args.out, 60)
@@ -345,7 +352,7 @@ def main():
             problems.append(f"{args.controls_stage}: not built in {args.web}, so its controls are untested")
         browser.close()
         browser = None
-        problems += check_no_webgl(args.chromium, url, profile_root, args.out, 60)
+        problems += check_no_webgl(args.chromium, url, profile_root, args.out, 60, args.width)
     finally:
         if browser:
             browser.close()

@@ -226,7 +226,19 @@
         : "The live page reports: " + ((error && error.textContent) || "an error without a message") + ".";
     live.classList.remove("live-running");
     if (frame.parentNode) frame.parentNode.removeChild(frame);
+    var box = live.querySelector(".live-controls");
+    if (box) box.textContent = "";
     setState(live, "error", message + " The picture above is the frame the build rendered.");
+    // Without EXT_texture_norm16 (no GL_R16 in this WebGL2) the exercises can still run with step 40's
+    // R16F luminance texture: offered, never switched to silently.
+    var retry = live.getAttribute("data-retry-args");
+    if (retry && /norm16/i.test(message) && live.getAttribute("data-args") !== retry) {
+      var button = live.querySelector(".live-start");
+      button.textContent = "Run it with ?" + retry + " instead";
+      button.hidden = false;
+      live.setAttribute("data-args", retry);
+      live.setAttribute("data-state", "idle");
+    }
   }
 
   function start(live) {
