@@ -289,6 +289,15 @@ TEST_CASE("inputs beyond the limits: size and nesting", "[glsl_es]") {
     std::string many = "#version 430 core\n";
     while (many.size() < t10::kGlslEsMaxSourceBytes - 64) many += "layout(location = 1) uniform float f;\n";
     CHECK(errorOf(many).empty());
+    // Subroutine counts are bounded (their checks are quadratic in them).
+    std::string uniforms = "#version 430 core\nsubroutine void S();\n";
+    for (int i = 0; i < 65; ++i) uniforms += "layout(location = " + std::to_string(i) + ") subroutine uniform S u" + std::to_string(i) + ";\n";
+    CHECK_THAT(errorOf(uniforms), Catch::Contains("in.frag:67: more than 64 subroutine uniforms cannot be translated"));
+    std::string functions = "#version 430 core\nsubroutine void S();\n";
+    while (functions.size() < t10::kGlslEsMaxSourceBytes - 64) functions += "layout(index = 0) subroutine(S) void f();\n";
+    CHECK_THAT(errorOf(functions), Catch::Contains("in.frag:259: more than 256 subroutine functions cannot be translated"));
+    // A texture call inside what a rewrite removes is left alone, not rewritten twice.
+    CHECK(errorOf("#version 430 core\nuniform sampler2D s;\nsubroutine float T(float x[int(texture(s, vec2(0), 1).x)]);\n").empty());
 }
 
 TEST_CASE("random damage to a real shader gives a translation or a t10::Error", "[glsl_es]") {

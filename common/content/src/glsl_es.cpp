@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -22,6 +23,9 @@ namespace {
 
 constexpr int kMaxNesting = 256; // (, [ and { together; the course's shaders stay below 10
 constexpr std::uint64_t kMaxLayoutValue = 65535; // so that a binding plus an array index stays an int
+// Bounds that keep the subroutine checks (quadratic in these counts) fast on hostile input.
+constexpr std::size_t kMaxSubroutineFunctions = 256;
+constexpr std::size_t kMaxSubroutineUniforms = 64;
 
 // Written after `#version 300 es`: ES has no default float precision in fragment shaders and none at
 // all for most sampler types; desktop GLSL is highp throughout.
@@ -793,6 +797,8 @@ void Translator::subroutineDeclaration(const Prefix& p, std::size_t first, std::
         }
         if (!location)
             refuse(line, "a subroutine uniform without layout(location = L)", "the web platform sets subroutine uniforms by location: give it one");
+        if (subroutineUniforms_.size() >= kMaxSubroutineUniforms)
+            refuse(line, "more than " + std::to_string(kMaxSubroutineUniforms) + " subroutine uniforms", "the translator's limit");
         for (const SubroutineUniform& u : subroutineUniforms_)
             if (u.location == *location) fail(line, "two subroutine uniforms at location " + std::to_string(*location));
         subroutineUniforms_.push_back({std::string(text(type)), std::string(text(name)), *location, tokens_[first].begin,
@@ -838,6 +844,9 @@ void Translator::subroutineFunction(const Prefix& p, std::size_t first, std::siz
     if (!index)
         refuse(line, "the subroutine function " + std::string(text(name - 1)) + " without layout(index = N)",
                "the web platform selects subroutines by index: give it one");
+    if (subroutineFunctions_.size() >= kMaxSubroutineFunctions)
+        refuse(line, "more than " + std::to_string(kMaxSubroutineFunctions) + " subroutine functions",
+               "GL itself guarantees no more (GL_MAX_SUBROUTINES)");
     const bool definition = isPunct(last, '}');
     subroutineFunctions_.push_back({std::string(text(name - 1)), p.subroutineTypes, *index, definition ? tokens_[last].end : 0, line});
     for (const auto& [from, to] : p.layoutRanges) erase(from, to);
@@ -916,6 +925,15 @@ void Translator::emitSubroutines() {
 
 // GLSL 4.30 converts an integer bias or level of detail to float; ES 3.00 has no implicit conversions.
 void Translator::convertTextureLiterals() {
+    // Literals inside what a rewrite removes (a subroutine type's parameters) stay as they are.
+    std::vector<std::pair<std::size_t, std::size_t>> removed;
+    for (const Edit& e : edits_)
+        if (e.end > e.begin) removed.emplace_back(e.begin, e.end);
+    std::sort(removed.begin(), removed.end());
+    const auto isRemoved = [&](std::size_t at) {
+        auto after = std::upper_bound(removed.begin(), removed.end(), std::make_pair(at, std::string::npos));
+        return after != removed.begin() && std::prev(after)->second > at;
+    };
     static const std::unordered_map<std::string_view, std::size_t> kFloatArgument = {
         {"texture", 2}, {"textureProj", 2}, {"textureLod", 2}, {"textureProjLod", 2}, {"textureLodOffset", 2},
         {"textureProjLodOffset", 2}, {"textureOffset", 3}, {"textureProjOffset", 3}};
@@ -940,7 +958,7 @@ void Translator::convertTextureLiterals() {
         const bool signedLiteral = arg.size() == 2 && (isPunct(arg[0], '-') || isPunct(arg[0], '+'));
         if (arg.size() != 1 && !signedLiteral) continue;
         const std::size_t literal = arg.back();
-        if (tokens_[literal].kind != Kind::Number) continue;
+        if (tokens_[literal].kind != Kind::Number || isRemoved(tokens_[literal].begin)) continue;
         if (const auto value = parseIntLiteral(text(literal)))
             edits_.push_back({tokens_[literal].begin, tokens_[literal].end, std::to_string(*value) + ".0"});
     }
