@@ -81,6 +81,10 @@ TEST_CASE("every shader of the repository translates, line for line", "[glsl_es]
         CHECK(es.source.find("subroutine") == std::string::npos);
         CHECK(es.source.find("//") == std::string::npos); // comments are blanked
     }
+    // The exact key's compute pass has no WebGL2 form: refused by name.
+    const fs::path compute = fs::path(T10_SOURCE_ROOT) / "common/optional/shaders/ExactKey.comp";
+    CHECK_THROWS_WITH(t10::translateToGlslEs(readText(compute), "ExactKey.comp", t10::GlslStage::Compute),
+                      Catch::StartsWith("ExactKey.comp: a compute shader cannot be translated to GLSL ES 3.00"));
 }
 
 TEST_CASE("the post-process shaders report the contract's units, binding and locations", "[glsl_es]") {
