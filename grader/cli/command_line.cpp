@@ -88,8 +88,8 @@ std::string nameFrom(const std::string& path, const std::string& how) {
 
 } // namespace
 
-Config parse(int argc, char** argv) {
-    Config config;
+void parse(int argc, char** argv, Config& config) {
+    config = Config{};
     Arguments args(argc, argv);
     while (args.next()) {
         const std::string& arg = args.arg();
@@ -142,10 +142,10 @@ Config parse(int argc, char** argv) {
             throw UsageError(error.what());
         }
     }
+    // The names first, from the paths as given (no file is looked at), so that a failure below still
+    // knows every submission's report folder.
     std::map<std::string, std::string> names;  // name -> the submission that has it
-    const fs::path report = fs::weakly_canonical(fs::absolute(config.reportDir));
     for (const std::string& s : config.submissions) {
-        if (!fs::is_directory(s)) throw UsageError(s + ": not a folder");
         std::string name = nameFrom(s, config.nameFrom);
         if (!config.roster.empty()) {
             const auto entry = roster.find(name);
@@ -160,13 +160,17 @@ Config parse(int argc, char** argv) {
                              "the name), or by student id with --roster CSV");
         }
         config.names.push_back(name);
+    }
+    const fs::path report = fs::weakly_canonical(fs::absolute(config.reportDir));
+    for (std::size_t i = 0; i < config.submissions.size(); ++i) {
+        const std::string& s = config.submissions[i];
+        if (!fs::is_directory(s)) throw UsageError(s + ": not a folder");
         // The report folder of a submission is emptied first: it must not be, or hold, the submission.
         const fs::path folder = fs::weakly_canonical(fs::absolute(s));
-        const fs::path target = report / name;
+        const fs::path target = report / config.names[i];
         const auto [end, unused] = std::mismatch(target.begin(), target.end(), folder.begin(), folder.end());
         if (end == target.end()) throw UsageError("--report " + config.reportDir + " would overwrite the submission " + s);
     }
-    return config;
 }
 
 } // namespace t10::grade

@@ -30,7 +30,9 @@ extern const char* const kUsage;
 
 // The options of argv; --help prints kUsage and exits 0. Throws t10::UsageError naming the argument
 // at fault: a bad option or value, a submission that is no folder, two submissions with one name, a
-// roster without a submission's name, or a --report folder that would overwrite a submission.
-Config parse(int argc, char** argv);
+// roster without a submission's name, or a --report folder that would overwrite a submission; a
+// folder it cannot look at throws std::filesystem::filesystem_error. Fills `config` as it goes, so
+// that whoever catches knows the submissions and names read so far.
+void parse(int argc, char** argv, Config& config);
 
 } // namespace t10::grade

@@ -22,6 +22,7 @@
 #include "checks/flip.hpp"
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
+#include "report/output.hpp"
 #include "report/report.hpp"
 #include "isolation/run_limited.hpp"
 #include "isolation/sandbox.hpp"
@@ -29,6 +30,7 @@
 #include "intake/submission_files.hpp"
 
 #include "t10/error.hpp"
+#include "t10/error_line.hpp"
 #include "t10/image_io.hpp"
 
 #include <algorithm>
@@ -53,6 +55,7 @@ namespace fs = std::filesystem;
 namespace {
 
 using t10::Error;
+using t10::errorLine;
 using t10::UsageError;
 using namespace t10::grade;
 
@@ -433,77 +436,114 @@ Report Grader::grade(const std::string& submission, const std::string& name, int
     return finish(report);
 }
 
+// What every submission gets when the grader fails before or beside grading it: status grader-error,
+// in report.json and every platform's result, where its report folder is known and writable.
+Report graderError(const Config& config, std::size_t i, const std::string& why, const std::string& isolation) {
+    Report report;
+    report.submission = config.names[i];
+    report.path = config.submissions[i];
+    report.part = config.part;
+    report.status = Status::GraderError;
+    report.isolation = isolation;
+    report.fill = fillPolicyName(config.fill);
+    report.message = "the grader failed: " + why;
+    return report;
+}
+
+// Writes report.json and the platforms' results of one report; a failure is one line on stderr.
+bool writeResults(const Config& config, const Report& report, std::ostream& log) {
+    try {
+        const fs::path dir = fs::path(config.reportDir) / report.submission;
+        if (report.status == Status::GraderError) {
+            fs::create_directories(dir);
+            writeReportJson(report, (dir / "report.json").string());
+        }
+        writeFormats(report, config.formats, dir.string());
+        return true;
+    } catch (const std::exception& error) {
+        log << "t10-grade: error: writing the results of " << report.path << ": " << errorLine(error) << "\n";
+    } catch (...) {
+        log << "t10-grade: error: writing the results of " << report.path << ": an unknown exception\n";
+    }
+    return false;
+}
+
+// Grades every submission of `config` with config.jobs threads; returns the exit code.
+int gradeAll(const Config& config) {
+    const Grader grader(config);
+    std::vector<Report> reports(config.submissions.size());
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> failed{false};
+    std::mutex printing;
+    auto worker = [&](int job) {
+        for (std::size_t i = next++; i < config.submissions.size(); i = next++) {
+            std::string why;
+            try {
+                reports[i] = grader.grade(config.submissions[i], config.names[i], job);
+                const std::lock_guard<std::mutex> lock(printing);
+                std::cout << reports[i].submission << ": " << statusName(reports[i].status) << ", score " << reports[i].score()
+                          << " (" << reports[i].passedCount() << "/" << reports[i].checks.size() << " checks) in "
+                          << static_cast<int>(reports[i].seconds + 0.5) << " s\n";
+            } catch (const std::exception& error) {
+                why = errorLine(error);
+            } catch (...) {
+                why = "an unknown exception";
+            }
+            const std::lock_guard<std::mutex> lock(printing);
+            if (!why.empty()) {
+                std::cerr << "t10-grade: error: grading " << config.submissions[i] << ": " << why << "\n";
+                reports[i] = graderError(config, i, why, isolationName(grader.isolation()));
+                failed = true;
+            }
+            if (!writeResults(config, reports[i], std::cerr)) failed = true;
+        }
+    };
+    // The threads are joined whatever happens: a std::thread destroyed while joinable ends the process.
+    struct Joined {
+        std::vector<std::thread> threads;
+        ~Joined() {
+            for (std::thread& t : threads)
+                if (t.joinable()) t.join();
+        }
+    } jobs;
+    try {
+        for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j)
+            jobs.threads.emplace_back(worker, j);
+    } catch (const std::system_error& error) {
+        // Under a process limit: the threads started share the rest (the main thread when none did).
+        std::cerr << "t10-grade: warning: started " << jobs.threads.size() << " of " << config.jobs
+                  << " job threads (" << error.code().message() << "); the others' submissions wait for them\n";
+        if (jobs.threads.empty()) worker(0);
+    }
+    for (std::thread& t : jobs.threads) t.join();
+    const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
+    writeGradebook(reports, gradebook);
+    writeClassIndex(reports, config.studentNames, config.reportDir);
+    std::cout << "wrote " << gradebook << ", index.html, grades-lms.csv and a report per submission in " << config.reportDir << "/\n";
+    // A submission the grader could not grade (status grader-error in the gradebook) is the
+    // grader's failure, not the student's.
+    return failed ? 1 : 0;
+}
+
 } // namespace
 
+// Every exception ends here: one line on stderr naming what failed (a path and the system's reason
+// for a system error), and a grader-error result for each submission whose report folder is known.
 int main(int argc, char** argv) {
     Config config;
     try {
-        config = parse(argc, argv);
+        parse(argc, argv, config);
+        return gradeAll(config);
     } catch (const UsageError& error) {
         std::cerr << "t10-grade: error: " << error.what() << "\n" << kUsage;
         return 2;
-    }
-    try {
-        const Grader grader(config);
-        std::vector<Report> reports(config.submissions.size());
-        std::atomic<std::size_t> next{0};
-        std::atomic<bool> failed{false};
-        std::mutex printing;
-        auto worker = [&](int job) {
-            for (std::size_t i = next++; i < config.submissions.size(); i = next++) {
-                try {
-                    reports[i] = grader.grade(config.submissions[i], config.names[i], job);
-                    const std::lock_guard<std::mutex> lock(printing);
-                    std::cout << reports[i].submission << ": " << statusName(reports[i].status) << ", score " << reports[i].score()
-                              << " (" << reports[i].passedCount() << "/" << reports[i].checks.size() << " checks) in "
-                              << static_cast<int>(reports[i].seconds + 0.5) << " s\n";
-                } catch (const std::exception& error) {
-                    const std::lock_guard<std::mutex> lock(printing);
-                    std::cerr << "t10-grade: error: grading " << config.submissions[i] << ": " << error.what() << "\n";
-                    reports[i].submission = config.names[i];
-                    reports[i].path = config.submissions[i];
-                    reports[i].part = config.part;
-                    reports[i].status = Status::GraderError;
-                    reports[i].isolation = isolationName(grader.isolation());
-                    reports[i].fill = fillPolicyName(config.fill);
-                    reports[i].message = std::string("the grader failed: ") + error.what();
-                    failed = true;
-                }
-                try {
-                    writeFormats(reports[i], config.formats, (fs::path(config.reportDir) / config.names[i]).string());
-                } catch (const std::exception& error) {
-                    const std::lock_guard<std::mutex> lock(printing);
-                    std::cerr << "t10-grade: error: writing the results of " << config.submissions[i] << ": " << error.what() << "\n";
-                    failed = true;
-                }
-            }
-        };
-        std::vector<std::thread> threads;
-        for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j) threads.emplace_back(worker, j);
-        for (std::thread& t : threads) t.join();
-        const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
-        writeGradebook(reports, gradebook);
-        writeClassIndex(reports, config.studentNames, config.reportDir);
-        std::cout << "wrote " << gradebook << ", index.html, grades-lms.csv and a report per submission in " << config.reportDir << "/\n";
-        // A submission the grader could not grade (status grader-error in the gradebook) is the
-        // grader's failure, not the student's.
-        return failed ? 1 : 0;
-    } catch (const std::exception& error) {
-        std::cerr << "t10-grade: error: " << error.what() << "\n";
+    } catch (...) {
+        const std::string why = errorLine(std::current_exception());
+        std::cerr << "t10-grade: error: " << why << "\n";
         // The platforms still get a result for each submission: the grader's failure, not the student's.
-        for (std::size_t i = 0; i < config.submissions.size() && !config.formats.empty(); ++i) {
-            Report report;
-            report.submission = config.names[i];
-            report.path = config.submissions[i];
-            report.part = config.part;
-            report.status = Status::GraderError;
-            report.message = std::string("the grader failed: ") + error.what();
-            try {
-                writeFormats(report, config.formats, (fs::path(config.reportDir) / config.names[i]).string());
-            } catch (const std::exception& again) {
-                std::cerr << "t10-grade: error: " << again.what() << "\n";
-            }
-        }
+        // Where the first cannot be written (the report folder is what failed) the rest are not tried.
+        for (std::size_t i = 0; i < config.names.size() && i < config.submissions.size(); ++i)
+            if (!writeResults(config, graderError(config, i, why, config.isolation), std::cerr)) break;
         return 1;
     }
 }

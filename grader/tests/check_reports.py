@@ -4,6 +4,7 @@
   check_reports.py reports REPORT_DIR NAME...    each named submission's report.json is as expected
   check_reports.py same BATCH_CSV SINGLE_CSV...   the rows of the single gradebooks equal the batch's
   check_reports.py docs INSTRUCTORS_MD            the page's table of known mistakes lists mistakes.tsv's ids
+  check_reports.py utf8 DIR...                    every file t10-grade wrote under the folders is valid UTF-8
 
 For a known mistake the check that guards its step must fail, name the mistake's catalogue id in
 its diagnosis and cover the step; the score must drop. For the fitted batch (make_submissions.FITTED)
@@ -80,7 +81,7 @@ FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-thr
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
             "shader_bytes": ["shader_bytes/PostProcess.frag", "shader compilation failed", "caf\ufffd"],
-            "crash": ["signal 11"], "loop": [f"timed out after {os.environ.get('T10_GRADE_LOOP_TIMEOUT', '3')} s"]}
+            "crash": ["signal 11", "caf\ufffd \ufffd\ufffd \x01\x07\x1b[0m <i>&lt;</i>"], "loop": [f"timed out after {os.environ.get('T10_GRADE_LOOP_TIMEOUT', '3')} s"]}
 # What fix_first must say for a submission that was not graded: the first compiler or shader error
 # with its file (relative to the submission) and line, else the first line of what happened.
 FIX_FIRST = {"no_compile": r"^fix first: Tutorial10\.cpp:\d+: error: expected",
@@ -90,7 +91,7 @@ FIX_FIRST = {"no_compile": r"^fix first: Tutorial10\.cpp:\d+: error: expected",
 # In a sanitized build (make test-asan) UBSan stops the crash submission's null store before the signal:
 # its report, then exit 1, is what the student reads (tests.cmake sets T10_GRADE_SANITIZED there).
 if os.environ.get("T10_GRADE_SANITIZED") == "1":
-    MESSAGES["crash"] = ["runtime error: store to null pointer"]
+    MESSAGES["crash"] = ["runtime error: store to null pointer", "caf\ufffd"]
     FIX_FIRST["crash"] = r"^fix first: case \w+ .*exit code 1"
 # Host folders a student-facing report must not name: the source tree and the tests' output tree.
 SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -269,17 +270,64 @@ def docs_ids(path):
     return ids
 
 
+# Control characters HTML calls parse errors: C0 but tab, line feed, form feed and carriage return; DEL; C1.
+HTML_CONTROLS = re.compile("[\x00-\x08\x0b\x0e-\x1f\x7f-\x9f]")
+
+
+def check_text_files(folders, errors):
+    """Every JSON, HTML and CSV file under FOLDERS decodes as strict UTF-8; JSON parses, HTML holds no
+    control character and no tag the grader did not write (a student's </pre> or <script> escaped),
+    CSV parses. Returns how many files were read."""
+    count = 0
+    for folder in folders:
+        for root, _, files in os.walk(folder):
+            for name in files:
+                path = os.path.join(root, name)
+                if not name.endswith((".json", ".html", ".csv")):
+                    continue
+                count += 1
+                with open(path, "rb") as f:
+                    data = f.read()
+                try:
+                    text = data.decode("utf-8")
+                except UnicodeDecodeError as error:
+                    errors.append(f"{path}: not valid UTF-8: {error} (bytes {data[max(0, error.start - 20):error.end + 20]!r})")
+                    continue
+                try:
+                    if name.endswith(".json"):
+                        json.loads(text)
+                    elif name.endswith(".csv"):
+                        list(csv.reader(text.splitlines()))
+                except (ValueError, csv.Error) as error:
+                    errors.append(f"{path}: does not parse: {error}")
+                if name.endswith(".html"):
+                    control = HTML_CONTROLS.search(text)
+                    if control:
+                        errors.append(f"{path}: control character U+{ord(control.group()):04X} at {control.start()}: "
+                                      f"{text[max(0, control.start() - 40):control.start() + 20]!r}")
+                    if "<script" in text:
+                        errors.append(f"{path}: a <script> tag the grader did not write")
+    return count
+
+
 def rows(path):
     with open(path, newline="", encoding="utf-8") as f:
         return {row["submission"]: row for row in csv.DictReader(f)}
 
 
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same", "docs"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("reports", "same", "docs", "utf8"):
         print(__doc__, file=sys.stderr)
         return 2
     errors = []
-    if sys.argv[1] == "docs":
+    if sys.argv[1] == "utf8":
+        count = check_text_files(sys.argv[2:], errors)
+        if count == 0:
+            errors.append(f"no JSON, HTML or CSV file under {sys.argv[2:]}")
+        elif not errors:
+            print(f"{count} JSON, HTML and CSV files under {len(sys.argv) - 2} folders: valid UTF-8, JSON and CSV parse, "
+                  "HTML without control characters or a student's tags")
+    elif sys.argv[1] == "docs":
         listed = docs_ids(sys.argv[2])
         if listed != list(CATALOGUE):
             missing = [i for i in CATALOGUE if i not in listed]

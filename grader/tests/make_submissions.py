@@ -51,9 +51,14 @@ MISTAKES = {
     # Statuses other than graded.
     "no_compile": (HOST, [("bool GL_Init(t10::App& app)\n{", "bool GL_Init(t10::App& app)\n{\n    int iMissingSemicolon = 1\n")]),
     "shader_error": ("PostProcess.frag", [("float fYNew", "flot fYNew")]),
-    # An #error line holding bytes that are not UTF-8 (Latin-1 'é', 0xff 0xfe): report.json stays valid.
-    "shader_bytes": ("PostProcess.frag", [("float fYNew", "#error caf\udce9 \udcff\udcfe\n    float fYNew")]),
-    "crash": (HOST, [("bool GL_Init(t10::App& app)\n{", "bool GL_Init(t10::App& app)\n{\n    volatile int* piNull = nullptr;\n    *piNull = 42;\n")]),
+    # An #error line holding bytes that are not UTF-8 (Latin-1 'é', 0xff 0xfe), control characters and
+    # markup: every file the grader writes stays valid UTF-8, its HTML free of control characters.
+    "shader_bytes": ("PostProcess.frag", [("float fYNew", "#error caf\udce9 \udcff\udcfe \x01\x1b[31m <b>&amp;</b> </pre><script>x</script>\n"
+                                                    "    float fYNew")]),
+    # Prints the same kind of bytes before it crashes: the program's output reaches the report too.
+    "crash": (HOST, [("#include <glm/glm.hpp>", "#include <glm/glm.hpp>\n#include <cstdio>"), ("bool GL_Init(t10::App& app)\n{", "bool GL_Init(t10::App& app)\n{\n"
+                      "    std::fputs(\"caf\\xe9 \\xff\\xfe \\x01\\x07\\x1b[0m <i>&lt;</i> </pre><script>x</script>\\n\", stdout);\n"
+                      "    std::fflush(stdout);\n    volatile int* piNull = nullptr;\n    *piNull = 42;\n")]),
     # A host loop: Mesa's llvmpipe caps shader loops (65535 iterations), so a looping shader ends.
     "loop": (HOST, [("void GL_Render(t10::App& app)\n{", "void GL_Render(t10::App& app)\n{\n    volatile bool bWait = true;\n    while (bWait) {}\n")]),
 }

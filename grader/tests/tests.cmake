@@ -94,6 +94,15 @@ add_test(NAME "grade: fitted parameters named with their measured values"
          COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/fitted ${GRADE_FITTED})
 set_tests_properties("grade: fitted parameters named with their measured values" PROPERTIES
                      FIXTURES_REQUIRED grade_fitted SKIP_RETURN_CODE 77)
+# Every file t10-grade wrote for the batches above is valid UTF-8 (issue 38): report.json, report.html,
+# the gradebooks, the class index and the platforms' results, with shader_bytes's compiler output and
+# crash's program output holding bytes that are not UTF-8, control characters and markup. Shown to fail
+# on main before the fix: shader_bytes/report.html held the bytes 0xe9 0xff 0xfe as they came.
+add_test(NAME "grade: every file the grader wrote is valid UTF-8"
+         COMMAND ${GRADE_CHECK} utf8 ${GRADE_REPORTS}/part1 ${GRADE_REPORTS}/part2 ${GRADE_REPORTS}/part3 ${GRADE_REPORTS}/fitted
+                 ${GRADE_REPORTS}/loop)
+set_tests_properties("grade: every file the grader wrote is valid UTF-8" PROPERTIES
+                     FIXTURES_REQUIRED "grade_part1;grade_part2;grade_part3;grade_fitted;grade_loop" SKIP_RETURN_CODE 77)
 # The instructors' page lists the catalogue (mistakes.tsv) as it is.
 add_test(NAME "grade: the instructors' page lists mistakes.tsv"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/check_reports.py docs ${PROJECT_SOURCE_DIR}/site/instructors.md)
@@ -170,11 +179,25 @@ set_tests_properties("grade: submission files listed, empty and incomplete submi
                      FIXTURES_REQUIRED grade_part1 SKIP_RETURN_CODE 77)
 
 # A checkout inside a 0700 folder (issue 29): as root the job uids cannot enter it; graded 100 with the
-# namespaces isolation (staged copies), one line and grader-error with uid, and as the owning user.
-add_test(NAME "grade: a checkout inside a 0700 folder, as root and as its owner"
-         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/private_checkout.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
-                 ${GRADE_OUT}/private-checkout)
-set_tests_properties("grade: a checkout inside a 0700 folder, as root and as its owner" PROPERTIES SKIP_RETURN_CODE 77 COST 85)
+# namespaces isolation (staged copies), one line and grader-error with uid, and as the owning user. One
+# test per case, each skipping (77) where it cannot run: wherever the checkout is (issue 38: from a clone
+# directly under /tmp the handle on /tmp was kept inside /tmp, under the tmpfs; two levels below /root
+# no user can own the folder, and the user case aborted t10-grade).
+foreach(case root-namespaces root-uid user)
+    add_test(NAME "grade: a checkout inside a 0700 folder (${case})"
+             COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/private_checkout.py ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}
+                     ${GRADE_OUT}/private-checkout-${case} ${case})
+    set_tests_properties("grade: a checkout inside a 0700 folder (${case})" PROPERTIES SKIP_RETURN_CODE 77 COST 30)
+endforeach()
+
+# The graders never abort (issue 38): a folder they may not enter (the report folder, a submission) ends
+# in one handler: exit 1, one line naming the path and the system's reason, a grader-error result where
+# the report folder can be written. Shown to fail on main before: exit -6, an uncaught filesystem_error.
+add_test(NAME "grade: a folder the grader may not enter is one error line and a grader-error result, never an abort"
+         COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/no_abort.py ${PROJECT_BINARY_DIR}/bin/t10-grade
+                 ${PROJECT_BINARY_DIR}/bin/t10-grade-tga ${PROJECT_SOURCE_DIR} ${GRADE_OUT}/no-abort)
+set_tests_properties("grade: a folder the grader may not enter is one error line and a grader-error result, never an abort"
+                     PROPERTIES SKIP_RETURN_CODE 77)
 
 # --- Hostile submissions (issues 19 and 29): each attack on the grader is contained, honest submissions
 # graded beside them keep 100; the same for TGA loaders (hostile/tga_attacks.py), graded at the same

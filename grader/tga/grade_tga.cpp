@@ -17,6 +17,7 @@
 #include "intake/submission_files.hpp"
 
 #include "t10/error.hpp"
+#include "t10/error_line.hpp"
 #include "t10/image_io.hpp"
 #include "t10/json.hpp"
 
@@ -77,8 +78,9 @@ struct Job {
     fs::path loader; // the built loader, readable by the job's uid
 };
 
-Config parseArgs(int argc, char** argv) {
-    Config config;
+// Fills `config` from argv as it goes (so that a failure's handler knows --report); throws
+// UsageError for a bad argument, std::filesystem::filesystem_error for a folder it cannot look at.
+void parseArgs(int argc, char** argv, Config& config) {
     Arguments args(argc, argv);
     while (args.next()) {
         const std::string& arg = args.arg();
@@ -104,7 +106,6 @@ Config parseArgs(int argc, char** argv) {
                          " (t10::loadTga, t10/tga.hpp's signature), which is built and run in the sandbox");
     }
     if (!config.help && !fs::is_directory(config.submission)) throw UsageError(config.submission + ": not a folder");
-    return config;
 }
 
 Bytes readBytes(const fs::path& path) {
@@ -434,20 +435,17 @@ Job prepareJob(const Config& config) {
 
 } // namespace
 
+// Every exception ends here: one line on stderr naming what failed (a path and the system's reason
+// for a system error) and, with --report, a grader-error report there.
 int main(int argc, char** argv) {
     Config config;
-    try {
-        config = parseArgs(argc, argv);
-    } catch (const UsageError& error) {
-        std::cerr << "t10-grade-tga: error: " << error.what() << "\n" << kUsage;
-        return 2;
-    }
-    if (config.help) {
-        std::cout << kUsage;
-        return 0;
-    }
     Job job;
     try {
+        parseArgs(argc, argv, config);
+        if (config.help) {
+            std::cout << kUsage;
+            return 0;
+        }
         job = prepareJob(config);
         std::vector<Outcome> outcomes;
         const nlohmann::json report = grade(config, job, outcomes);
@@ -455,10 +453,23 @@ int main(int argc, char** argv) {
         std::error_code ignored;
         fs::remove_all(job.work, ignored);
         return 0;
-    } catch (const std::exception& error) {
-        std::cerr << "t10-grade-tga: error: " << error.what() << "\n";
+    } catch (const UsageError& error) {
+        std::cerr << "t10-grade-tga: error: " << error.what() << "\n" << kUsage;
+        return 2;
+    } catch (...) {
+        const std::string why = t10::errorLine(std::current_exception());
+        std::cerr << "t10-grade-tga: error: " << why << "\n";
         std::error_code ignored;
         if (!job.work.empty()) fs::remove_all(job.work, ignored);
+        if (!config.reportFile.empty()) {
+            try {
+                t10::writeJsonFile(config.reportFile, {{"submission", fs::path(config.submission).lexically_normal().filename().string()},
+                                                       {"status", "grader-error"}, {"score", 0},
+                                                       {"message", "the grader failed: " + why}});
+            } catch (...) {
+                std::cerr << "t10-grade-tga: error: " << t10::errorLine(std::current_exception()) << "\n";
+            }
+        }
         return 1;
     }
 }
