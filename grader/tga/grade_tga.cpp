@@ -369,6 +369,22 @@ void printAndReport(const Config& config, const nlohmann::json& report, const st
     if (!config.reportFile.empty()) t10::writeJsonFile(config.reportFile, report);
 }
 
+// The score: every case weighs the same, but a malformed file's case earns only the share of the
+// valid files the loader decodes. Rejecting a malformed file proves nothing by itself: a loader that
+// throws on every file rejects them all, and scores 0, not the malformed cases' share of 100.
+int score(const std::vector<Outcome>& outcomes) {
+    int valid = 0, decoded = 0, rejected = 0;
+    for (const Outcome& o : outcomes) {
+        valid += o.malformed ? 0 : 1;
+        decoded += !o.malformed && o.passed ? 1 : 0;
+        rejected += o.malformed && o.passed ? 1 : 0;
+    }
+    if (outcomes.empty() || valid == 0) return 0;
+    // (decoded + rejected * decoded / valid) of the cases, in whole points, rounded down.
+    const long earned = 100L * (static_cast<long>(decoded) * valid + static_cast<long>(rejected) * decoded);
+    return static_cast<int>(earned / (static_cast<long>(outcomes.size()) * valid));
+}
+
 // Grades the submission in `job`'s work folder; the report as report.json holds it.
 nlohmann::json grade(const Config& config, Job& job, std::vector<Outcome>& outcomes) {
     nlohmann::json report{{"submission", fs::path(config.submission).lexically_normal().filename().string()},
@@ -400,7 +416,7 @@ nlohmann::json grade(const Config& config, Job& job, std::vector<Outcome>& outco
         outcomes.push_back(runCase(job, cases[i], static_cast<int>(i), config.timeout));
         passed += outcomes.back().passed ? 1 : 0;
     }
-    report["score"] = passed * 100 / static_cast<int>(cases.size());
+    report["score"] = score(outcomes);
     report["cases"] = nlohmann::json::array();
     for (const Outcome& o : outcomes) {
         report["cases"].push_back({{"file", o.name}, {"malformed", o.malformed}, {"passed", o.passed}, {"verdict", o.verdict},

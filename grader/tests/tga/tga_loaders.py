@@ -4,8 +4,10 @@ tga.cpp written from common/content/src/tga.cpp, and what each must get. The hel
 grade a loader are shared with the hostile suite (hostile/tga_attacks.py: the cheat and the attacks).
 
 usage: tga_loaders.py mutants SOURCE_DIR T10_GRADE_TGA OUT_DIR
-  the project's loader scores 100; each mutant (flip, swap, crash, hang, accept) fails the case it
-  breaks with its verdict (isolation auto)
+  the project's loader scores 100; each mutant (flip, swap, crash, hang, accept, throw) fails the case it
+  breaks with its verdict (isolation auto); every score earns the malformed-file cases only in
+  proportion to the valid files decoded, so the loader that throws on every file scores 0 (it scored
+  35, 10 malformed cases of 28, before issue 38)
 Exit 0 when every expectation holds, 1 with the failures listed, 77 (skipped) where no sandbox can be
 had here (no working bwrap, and not root for the uid fallback)."""
 import json
@@ -108,7 +110,22 @@ def mutants(loader):
                  {"rgb24_rle_bl": "hang", "rgb24_raw_bl": "right pixels"}),
         "accept": (wrapped(loader, "try { return correctLoadTga(path); } catch (const Error&) { return Image8(1, 1, 3); }"),
                    {"malformed_zero_width": "accepted a malformed file", "rgb24_raw_bl": "right pixels"}),
+        # Decodes nothing: it rejects every malformed file too, which must earn nothing (issue 38).
+        "throw": (wrapped(loader, 'throw Error(path + ": not supported");'),
+                  {"rgb24_raw_bl": "rejected a valid file", "malformed_empty": "rejected"}),
     }
+
+
+def fair_score(result):
+    """The score the cases' verdicts earn: every case weighs the same, a rejected malformed file only the
+    share of the valid files decoded (so a loader that decodes nothing scores 0), in whole points."""
+    cases = result.get("cases", [])
+    valid = [c for c in cases if not c["malformed"]]
+    decoded = sum(c["passed"] for c in valid)
+    rejected = sum(c["passed"] for c in cases if c["malformed"])
+    if not cases or not valid:
+        return 0
+    return 100 * (decoded * len(valid) + rejected * decoded) // (len(cases) * len(valid))
 
 
 def main():
@@ -146,6 +163,10 @@ def main():
             expect(got.get(case) == verdict, f"{case}: {verdict} (got {got.get(case)})")
         if name != "reference":
             expect(result["score"] < 100, f"below 100 (got {result['score']})")
+        expect(result["score"] == fair_score(result), f"score {fair_score(result)}, the malformed cases earned in proportion "
+               f"to the valid files decoded (got {result['score']})")
+        if name == "throw":
+            expect(result["score"] == 0, f"score 0 for a loader that decodes nothing (got {result['score']})")
     shutil.rmtree(out, ignore_errors=True)
     print(f"{len(failures)} failure(s)")
     return 1 if failures else 0
