@@ -41,7 +41,7 @@ help:
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
-	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
+	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
 	@echo "make fuzz   run every fuzz target FUZZ_SECONDS each (default 60; FUZZ_TARGETS=\"gltf ...\" for some)"
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
@@ -163,7 +163,7 @@ site-serve: configure
 	port=$(or $(SITE_PORT),4000); echo "Serving $(BUILD)/site on http://127.0.0.1:$$port/ (Ctrl-C stops)"; \
 	exec python3 -m http.server --bind 127.0.0.1 --directory $(BUILD)/site $$port
 
-# Fuzzing (fuzz/): every libFuzzer target (tga, exr, cli, gltf) built with clang, ASan and UBSan into
+# Fuzzing (fuzz/): every libFuzzer target (tga, exr, cli, glsl_es, gltf) built with clang, ASan and UBSan into
 # $(BUILD)/fuzz/, each run for FUZZ_SECONDS (default 60); FUZZ_TARGETS="tga gltf" picks some. Not part
 # of `make test`.
 .PHONY: fuzz fuzz-build
