@@ -271,8 +271,8 @@ private:
     void erase(std::size_t from, std::size_t to);
     void rewriteLayout(const Prefix& p, std::size_t first, const std::vector<std::string>& kept);
     void uniformDeclaration(const Prefix& p, std::size_t first, std::size_t last);
-    void uniformBlock(const Prefix& p, std::size_t first, std::size_t last);
-    void inOutDeclaration(const Prefix& p, std::size_t first, std::size_t last);
+    void uniformBlock(const Prefix& p, std::size_t first);
+    void inOutDeclaration(const Prefix& p, std::size_t first);
     void subroutineDeclaration(const Prefix& p, std::size_t first, std::size_t last);
     void subroutineFunction(const Prefix& p, std::size_t first, std::size_t last);
     std::vector<std::pair<int, std::string>> subroutineCallees(const SubroutineUniform& u, std::size_t& lastEnd) const;
@@ -666,13 +666,13 @@ void Translator::declaration(std::size_t first, std::size_t last) {
         }
         return;
     }
-    if (p.uniform) return block ? uniformBlock(p, first, last) : uniformDeclaration(p, first, last);
+    if (p.uniform) return block ? uniformBlock(p, first) : uniformDeclaration(p, first, last);
     if ((p.in || p.out) && block)
         refuse(line, "an in/out interface block", "GLSL ES 3.00 has blocks only for uniforms: declare the variables one by one");
     if ((p.in || p.out) && isPunct(rest, ';') && !p.layout.empty())
         refuse(line, "a layout(...) in/out default", "it belongs to compute, geometry or tessellation shaders, or to "
                      "fragment-test qualifiers GLSL ES 3.00 lacks");
-    if (p.in || p.out) return inOutDeclaration(p, first, last);
+    if (p.in || p.out) return inOutDeclaration(p, first);
     if (!p.layout.empty())
         refuse(line, "layout(" + p.layout.front().name + ")", "it is on a declaration that is neither a uniform nor an in/out variable");
 }
@@ -719,7 +719,7 @@ void Translator::uniformDeclaration(const Prefix& p, std::size_t first, std::siz
     rewriteLayout(p, first, {});
 }
 
-void Translator::uniformBlock(const Prefix& p, std::size_t first, std::size_t last) {
+void Translator::uniformBlock(const Prefix& p, std::size_t first) {
     const std::size_t nameToken = nextCode(p.end);
     const std::string name(text(nameToken));
     std::size_t k = nextCode(matching(nextCode(nameToken + 1)) + 1);
@@ -728,7 +728,6 @@ void Translator::uniformBlock(const Prefix& p, std::size_t first, std::size_t la
         k = nextCode(k + 1);
         size = arraySize(k);
     }
-    (void)last;
     std::vector<std::string> kept;
     bool packing = defaultPacking_;
     for (const LayoutQualifier& q : p.layout) {
@@ -752,7 +751,7 @@ void Translator::uniformBlock(const Prefix& p, std::size_t first, std::size_t la
     rewriteLayout(p, first, kept);
 }
 
-void Translator::inOutDeclaration(const Prefix& p, std::size_t first, std::size_t /*last*/) {
+void Translator::inOutDeclaration(const Prefix& p, std::size_t first) {
     // ES 3.00 allows a location only on vertex inputs and fragment outputs; varyings match by name.
     const bool keep = (stage_ == GlslStage::Vertex && p.in) || (stage_ == GlslStage::Fragment && p.out);
     std::vector<std::string> kept;
