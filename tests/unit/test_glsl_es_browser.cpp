@@ -1,0 +1,169 @@
+// The translator's output in the compiler that matters: WebGL 2 in headless Chromium (ANGLE's shader
+// translator, on SwiftShader). One page compiles every translation of the repository's shaders, links
+// the stages' pairs, and compiles copies with a deliberate error whose line ANGLE must report as the
+// source's. Built only where CMake finds Chromium; elsewhere the test "glsl es: Chromium" is skipped.
+#include "t10/glsl_es.hpp"
+
+#include "t10_catch.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+}
+
+std::vector<fs::path> repositoryShaders() {
+    std::vector<fs::path> shaders;
+    for (const char* folder : {"common", "extras", "tutorial10_part0_start", "tutorial10_part1_tonemap",
+                               "tutorial10_part2_bloom", "tutorial10_part3_gaussian", "tools"})
+        for (const auto& entry : fs::recursive_directory_iterator(fs::path(T10_SOURCE_ROOT) / folder))
+            if (entry.path().extension() == ".vert" || entry.path().extension() == ".frag") shaders.push_back(entry.path());
+    std::sort(shaders.begin(), shaders.end());
+    return shaders;
+}
+
+bool isVertex(const fs::path& file) { return file.extension() == ".vert"; }
+
+std::string translate(const std::string& source, const fs::path& file) {
+    return t10::translateToGlslEs(source, file.string(), isVertex(file) ? t10::GlslStage::Vertex : t10::GlslStage::Fragment)
+        .source;
+}
+
+// The source with an undeclared name appended to the last line that starts with '}'; `line` gets
+// that line's number.
+std::string withError(const std::string& source, int& line) {
+    std::vector<std::string> lines;
+    std::istringstream in(source);
+    for (std::string text; std::getline(in, text);) lines.push_back(text);
+    std::size_t target = lines.size();
+    while (target > 0 && lines[target - 1].rfind('}', 0) != 0) --target;
+    REQUIRE(target > 0);
+    lines[target - 1] += " float t10Broken = t10UndeclaredName;";
+    line = static_cast<int>(target);
+    std::string out;
+    for (const std::string& text : lines) out += text + "\n";
+    return out;
+}
+
+// Compiles every case's shader (and links it with `with`, when given) in WebGL 2 and returns, per
+// case, {compiled, linked, log}.
+const char* kPage = R"(<!DOCTYPE html><html><body><pre id="out"></pre><script>
+const cases = CASES;
+const gl = document.createElement("canvas").getContext("webgl2");
+const results = [];
+function compile(type, source) {
+  const shader = gl.createShader(type);
+  gl.shaderSource(shader, source);
+  gl.compileShader(shader);
+  return shader;
+}
+for (const c of cases) {
+  if (!gl) { results.push({compiled: false, linked: false, log: "no WebGL 2"}); continue; }
+  const shader = compile(c.vertex ? gl.VERTEX_SHADER : gl.FRAGMENT_SHADER, c.source);
+  const r = {compiled: !!gl.getShaderParameter(shader, gl.COMPILE_STATUS), linked: null, log: gl.getShaderInfoLog(shader)};
+  if (r.compiled && c.with !== undefined) {
+    const program = gl.createProgram();
+    gl.attachShader(program, shader);
+    gl.attachShader(program, compile(c.vertex ? gl.FRAGMENT_SHADER : gl.VERTEX_SHADER, c.with));
+    gl.linkProgram(program);
+    r.linked = !!gl.getProgramParameter(program, gl.LINK_STATUS);
+    r.log += gl.getProgramInfoLog(program);
+  }
+  results.push(r);
+}
+document.getElementById("out").textContent = "T10RESULTS" + JSON.stringify(results) + "T10END";
+</script></body></html>
+)";
+
+nlohmann::json runInChromium(const nlohmann::json& cases) {
+    const fs::path dir = fs::path(T10_TEST_TMP_DIR) / "glsl_es_browser";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "profile");
+    std::string json = cases.dump();
+    for (std::size_t at = 0; (at = json.find("</", at)) != std::string::npos; at += 3) json.replace(at, 2, "<\\/");
+    std::string page = kPage;
+    page.replace(page.find("CASES"), 5, json);
+    std::ofstream(dir / "page.html", std::ios::binary) << page;
+    const std::string command = std::string("'") + T10_CHROMIUM + "' --headless --no-sandbox --use-angle=swiftshader "
+                                "--enable-unsafe-swiftshader --ignore-gpu-blocklist --user-data-dir='" +
+                                (dir / "profile").string() + "' --dump-dom 'file://" + (dir / "page.html").string() +
+                                "' 2>'" + (dir / "chromium.log").string() + "'";
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::string dom;
+    char buffer[4096];
+    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) dom.append(buffer, n);
+    const int status = pclose(pipe);
+    const std::size_t begin = dom.find("T10RESULTS"), end = dom.find("T10END");
+    INFO("chromium exit status " << status << "; its messages: " << (dir / "chromium.log").string());
+    REQUIRE(begin != std::string::npos);
+    REQUIRE(end != std::string::npos);
+    std::string text = dom.substr(begin + 10, end - begin - 10);
+    // --dump-dom writes the text node HTML-escaped.
+    for (const auto& [entity, character] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+        for (std::size_t at = 0; (at = text.find(entity, at)) != std::string::npos; at += character.size())
+            text.replace(at, entity.size(), character);
+    return nlohmann::json::parse(text);
+}
+
+} // namespace
+
+TEST_CASE("WebGL 2 compiles every translation and reports a deliberate error on the source's line", "[glsl_es][chromium]") {
+    const fs::path root(T10_SOURCE_ROOT);
+    const std::string quad = translate(readText(root / "common/shaders/FullScreenQuad.vert"), "FullScreenQuad.vert");
+    const std::string sceneVertex = translate(readText(root / "common/shaders/Scene.vert"), "Scene.vert");
+    nlohmann::json cases = nlohmann::json::array();
+    std::vector<std::string> names;
+    std::vector<int> errorLines; // 0: must compile (and link when paired)
+    const auto add = [&](const std::string& name, const fs::path& file, const std::string& source, int errorLine) {
+        nlohmann::json c = {{"vertex", isVertex(file)}, {"source", source}};
+        const std::string stage = file.parent_path().filename().string();
+        const bool postProcess = stage.rfind("tutorial10_", 0) == 0 || stage == "extras" || stage == "views";
+        if (errorLine == 0 && postProcess && !isVertex(file)) c["with"] = quad;
+        if (errorLine == 0 && file.filename() == "Scene.frag") c["with"] = sceneVertex;
+        cases.push_back(c);
+        names.push_back(name);
+        errorLines.push_back(errorLine);
+    };
+    for (const fs::path& file : repositoryShaders()) {
+        const std::string source = readText(file);
+        add(file.string(), file, translate(source, file), 0);
+        int line = 0;
+        const std::string broken = withError(source, line);
+        add(file.string() + " with an error on line " + std::to_string(line), file, translate(broken, file), line);
+    }
+    int line = 0;
+    const std::string first = withError("#version 430 core\nout vec4 c;\n\nvoid main() {\n    c = vec4(1.0);\n}\n", line);
+    add("#version on line 1, an error on line " + std::to_string(line), "first.frag", translate(first, "first.frag"), line);
+    // The check can fail: desktop GLSL under an ES version line does not compile.
+    std::string desktop = readText(root / "tutorial10_part3_gaussian/Gauss.frag");
+    desktop.replace(desktop.find("#version 430 core"), 17, "#version 300 es\nprecision highp float;");
+    add("untranslated Gauss.frag", "Gauss.frag", desktop, -1);
+
+    const nlohmann::json results = runInChromium(cases);
+    REQUIRE(results.size() == cases.size());
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const nlohmann::json& r = results[i];
+        INFO(names[i] << "\n" << r["log"].get<std::string>());
+        if (errorLines[i] == 0) {
+            CHECK(r["compiled"].get<bool>());
+            if (cases[i].contains("with")) CHECK(r["linked"] == true);
+        } else {
+            CHECK_FALSE(r["compiled"].get<bool>());
+            if (errorLines[i] > 0) CHECK_THAT(r["log"].get<std::string>(), Catch::Contains("0:" + std::to_string(errorLines[i]) + ": 't10UndeclaredName'"));
+        }
+    }
+}
