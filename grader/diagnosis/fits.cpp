@@ -1,27 +1,17 @@
 // The one-parameter search; see fits.hpp.
 #include "diagnosis/fits.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace t10::grade {
 
-Fit fitParameter(const std::function<double(double)>& error, double low, double high, bool logScale, int grid, int steps) {
-    // Searched in t: the value itself, or its log.
-    const auto value = [&](double t) { return logScale ? std::exp(t) : t; };
-    const double t0 = logScale ? std::log(low) : low;
-    const double t1 = logScale ? std::log(high) : high;
-    const double dt = (t1 - t0) / (grid - 1);
-    Fit best;
-    int bestIndex = 0;
-    for (int i = 0; i < grid; ++i) {
-        const double e = error(value(t0 + dt * i));
-        if (e < best.error) {
-            best = {value(t0 + dt * i), e};
-            bestIndex = i;
-        }
-    }
-    double a = t0 + dt * std::max(0, bestIndex - 1);
-    double b = t0 + dt * std::min(grid - 1, bestIndex + 1);
+namespace {
+
+// `steps` golden-section steps on [a, b] (in t); the better of the last two points.
+Fit goldenSection(const std::function<double(double)>& error, const std::function<double(double)>& value, double a, double b,
+                  int steps) {
     const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
     double c = b - ratio * (b - a);
     double d = a + ratio * (b - a);
@@ -42,8 +32,40 @@ Fit fitParameter(const std::function<double(double)>& error, double low, double 
             ed = error(value(d));
         }
     }
-    if (ec < best.error) best = {value(c), ec};
-    if (ed < best.error) best = {value(d), ed};
+    return ec < ed ? Fit{value(c), ec} : Fit{value(d), ed};
+}
+
+} // namespace
+
+Fit fitParameter(const std::function<double(double)>& error, double low, double high, bool logScale, int grid, int steps,
+                 int starts, double goodEnough) {
+    // Searched in t: the value itself, or its log.
+    const auto value = [&](double t) { return logScale ? std::exp(t) : t; };
+    const double t0 = logScale ? std::log(low) : low;
+    const double t1 = logScale ? std::log(high) : high;
+    const double dt = (t1 - t0) / (grid - 1);
+    std::vector<double> errors(static_cast<std::size_t>(grid));
+    Fit best;
+    for (int i = 0; i < grid; ++i) {
+        errors[static_cast<std::size_t>(i)] = error(value(t0 + dt * i));
+        if (errors[static_cast<std::size_t>(i)] < best.error) best = {value(t0 + dt * i), errors[static_cast<std::size_t>(i)]};
+    }
+    // The grid's local minima, best first: each brackets a basin of its own.
+    std::vector<int> minima;
+    for (int i = 0; i < grid; ++i) {
+        const double e = errors[static_cast<std::size_t>(i)];
+        const bool left = i == 0 || e <= errors[static_cast<std::size_t>(i - 1)];
+        const bool right = i == grid - 1 || e <= errors[static_cast<std::size_t>(i + 1)];
+        if (left && right) minima.push_back(i);
+    }
+    std::stable_sort(minima.begin(), minima.end(),
+                     [&](int a, int b) { return errors[static_cast<std::size_t>(a)] < errors[static_cast<std::size_t>(b)]; });
+    for (std::size_t k = 0; k < minima.size() && static_cast<int>(k) < starts; ++k) {
+        const int i = minima[k];
+        const Fit found = goldenSection(error, value, t0 + dt * std::max(0, i - 1), t0 + dt * std::min(grid - 1, i + 1), steps);
+        if (found.error < best.error) best = found;
+        if (best.error <= goodEnough) break;
+    }
     return best;
 }
 

@@ -61,6 +61,7 @@ EXPECTED = {
     "pass_count": ("graded", [("pot.blur", "blur-passes", 34), ("pot.blur-pass-count", "blur-passes", 34)]),
     "p1_steps_missing": ("graded", [("pot.frame", "tone-map-missing", 6), ("pot.frame", "tone-map-missing", 10)]),
     "p1_one_constant": ("graded", [("pot.frame", "white-point", 9)]),
+    "p1_middle_grey_1_0": ("graded", [("pot.frame", "middle-grey", 9), ("extremes.frame", "middle-grey", 9)]),
     "no_compile": ("build-failed", []),
     "shader_error": ("shader-error", []),
     "shader_bytes": ("shader-error", []),
@@ -76,7 +77,8 @@ for _name in list(OUTSIDE) + list(OUTSIDE2):
 FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-threshold", 2.5),
                   "weight": ("bloom-weight", 0.5), "tap": ("blur-tap-inner", 0.424), "sigma": ("blur-sigma", 2.0),
                   "full_res_offsets": ("blur-sigma", 1.25), "pass_count": ("blur-passes", 3),
-                  "rec601": ("luminance-weights", [0.299, 0.587, 0.114]), "p1_one_constant": ("white-point", 0.3)}
+                  "rec601": ("luminance-weights", [0.299, 0.587, 0.114]), "p1_one_constant": ("white-point", 0.3),
+                  "p1_middle_grey_1_0": ("middle-grey", 1.0)}
 # What the message of a submission that was not graded must say (the tool's own words).
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
@@ -244,18 +246,18 @@ def check_report(report_dir, name, errors):
         else:
             print(f"{name}: score {report['score']}, {check_id} failed as [{mistake}] (step {step}): {c['measured']}")
 
-def compare_part1(report_dir, errors):
-    """Five missing steps cost more than one wrong constant."""
+def compare_part1(report_dir, names, errors):
+    """Five missing steps cost more than one wrong constant (each of Part 1's one-constant submissions)."""
     scores = {}
-    for name in ("p1_steps_missing", "p1_one_constant"):
+    for name in ["p1_steps_missing"] + names:
         with open(os.path.join(report_dir, name, "report.json"), encoding="utf-8") as f:
             scores[name] = json.load(f)["score"]
-    if scores["p1_steps_missing"] >= scores["p1_one_constant"]:
-        errors.append(f"Part 1 with steps 6-10 missing scores {scores['p1_steps_missing']}, not below one wrong "
-                      f"constant's {scores['p1_one_constant']}")
-    else:
-        print(f"Part 1: steps 6-10 missing scores {scores['p1_steps_missing']}, one wrong constant "
-              f"{scores['p1_one_constant']}")
+    for name in names:
+        if scores["p1_steps_missing"] >= scores[name]:
+            errors.append(f"Part 1 with steps 6-10 missing scores {scores['p1_steps_missing']}, not below one wrong "
+                          f"constant's {scores[name]} ({name})")
+        else:
+            print(f"Part 1: steps 6-10 missing scores {scores['p1_steps_missing']}, one wrong constant ({name}) {scores[name]}")
 
 
 def docs_ids(path):
@@ -339,8 +341,9 @@ def main():
     elif sys.argv[1] == "reports":
         for name in sys.argv[3:]:
             check_report(sys.argv[2], name, errors)
-        if "p1_steps_missing" in sys.argv[3:] and "p1_one_constant" in sys.argv[3:]:
-            compare_part1(sys.argv[2], errors)
+        constants = [n for n in ("p1_one_constant", "p1_middle_grey_1_0") if n in sys.argv[3:]]
+        if "p1_steps_missing" in sys.argv[3:] and constants:
+            compare_part1(sys.argv[2], constants, errors)
     else:
         batch = rows(sys.argv[2])
         for single in sys.argv[3:]:

@@ -4,7 +4,9 @@ shaders-only copy of each, an equivalent rewrite of each part's tone map, every 
 catalogue applied to a copy of Part 3, and submissions that do not build, whose shader does not
 compile, that crash and that loop forever. Then the fitted batch (FITTED): every parameter of the
 catalogue at two values the grader's own fixtures above do not use, mistakes outside the catalogue
-(OUTSIDE), and Part 1 with steps 6-10 missing beside Part 1 with one wrong constant (PART1).
+(OUTSIDE), and Part 1 with steps 6-10 missing beside Part 1 with one wrong constant (PART1; the
+middle grey 1.0 among them, which issue 38 found unnamed). make grade-sweep (sweep.py) spreads every
+fitted parameter across its fit's range.
 
 Every mistake is one textual change of the current reference file, so it never drifts from it; a
 change whose text is no longer found is an error (exit 1), not a silently unchanged copy.
@@ -131,6 +133,9 @@ EQUIVALENT = [("return log2(fVal) * 0.30102999566374217366165225171822f;", "retu
 PART1 = {
     "p1_steps_missing": ("PostProcess.frag", [("v3ColourOut = toneMap(v3RetColour, v2UV);", "v3ColourOut = v3RetColour;")]),
     "p1_one_constant": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.3f;")]),
+    # Issue 38's regression: middle grey 1.0 read "no constant factor or shift explains it" and lost
+    # steps 6-10 (70) after the fits were shortened; the extremes case passes only within 5e-7 of 1.0.
+    "p1_middle_grey_1_0": ("PostProcess.frag", [("1.03f - (2.0f", "1.0f - (2.0f")]),
     "equivalent1": ("PostProcess.frag", EQUIVALENT),
 }
 PART2 = {"equivalent2": ("PostProcess.frag", EQUIVALENT)}
