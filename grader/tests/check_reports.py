@@ -62,6 +62,9 @@ EXPECTED = {
     "p1_steps_missing": ("graded", [("pot.frame", "tone-map-missing", 6), ("pot.frame", "tone-map-missing", 10)]),
     "p1_one_constant": ("graded", [("pot.frame", "white-point", 9)]),
     "p1_middle_grey_1_0": ("graded", [("pot.frame", "middle-grey", 9), ("extremes.frame", "middle-grey", 9)]),
+    "p2_one_change": ("graded", [("pot.frame", "white-point", 9)]),
+    # Two mistakes at once: no one model explains it, so only its score is checked (compare_scores).
+    "p2_change_and_step_missing": ("graded", None),
     "no_compile": ("build-failed", []),
     "shader_error": ("shader-error", []),
     "shader_bytes": ("shader-error", []),
@@ -78,7 +81,7 @@ FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-thr
                   "weight": ("bloom-weight", 0.5), "tap": ("blur-tap-inner", 0.424), "sigma": ("blur-sigma", 2.0),
                   "full_res_offsets": ("blur-sigma", 1.25), "pass_count": ("blur-passes", 3),
                   "rec601": ("luminance-weights", [0.299, 0.587, 0.114]), "p1_one_constant": ("white-point", 0.3),
-                  "p1_middle_grey_1_0": ("middle-grey", 1.0)}
+                  "p1_middle_grey_1_0": ("middle-grey", 1.0), "p2_one_change": ("white-point", 0.25)}
 # What the message of a submission that was not graded must say (the tool's own words).
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
@@ -224,6 +227,12 @@ def check_report(report_dir, name, errors):
             fail(f"{check_id} does not say '{words}': {text[:300]}")
     if name in FITTED or name in OUTSIDE or name in OUTSIDE2:
         return
+    if failures is None:
+        if report["score"] >= 100:
+            fail("score 100 with two mistakes")
+        else:
+            print(f"{name}: score {report['score']}")
+        return
     if not failures:
         failed = [c["id"] for c in report["checks"] if not c["passed"]]
         if report["score"] != 100 or failed:
@@ -258,6 +267,19 @@ def compare_part1(report_dir, names, errors):
                           f"constant's {scores[name]} ({name})")
         else:
             print(f"Part 1: steps 6-10 missing scores {scores['p1_steps_missing']}, one wrong constant ({name}) {scores[name]}")
+
+
+def compare_scores(report_dir, one_change, with_step_missing, errors):
+    """The reference with one change never scores below the same change with a step missing."""
+    scores = {}
+    for name in (one_change, with_step_missing):
+        with open(os.path.join(report_dir, name, "report.json"), encoding="utf-8") as f:
+            scores[name] = json.load(f)["score"]
+    if scores[one_change] < scores[with_step_missing]:
+        errors.append(f"{one_change} scores {scores[one_change]}, below {with_step_missing}'s {scores[with_step_missing]}")
+    else:
+        print(f"one change ({one_change}) scores {scores[one_change]}, the change and a step missing "
+              f"({with_step_missing}) {scores[with_step_missing]}")
 
 
 def docs_ids(path):
@@ -341,6 +363,8 @@ def main():
     elif sys.argv[1] == "reports":
         for name in sys.argv[3:]:
             check_report(sys.argv[2], name, errors)
+        if "p2_one_change" in sys.argv[3:] and "p2_change_and_step_missing" in sys.argv[3:]:
+            compare_scores(sys.argv[2], "p2_one_change", "p2_change_and_step_missing", errors)
         constants = [n for n in ("p1_one_constant", "p1_middle_grey_1_0") if n in sys.argv[3:]]
         if "p1_steps_missing" in sys.argv[3:] and constants:
             compare_part1(sys.argv[2], constants, errors)

@@ -138,7 +138,12 @@ PART1 = {
     "p1_middle_grey_1_0": ("PostProcess.frag", [("1.03f - (2.0f", "1.0f - (2.0f")]),
     "equivalent1": ("PostProcess.frag", EQUIVALENT),
 }
-PART2 = {"equivalent2": ("PostProcess.frag", EQUIVALENT)}
+# Part 2: the reference with one change, and the same change with a step missing (the bloom not added,
+# steps 19-20): the first must never score below the second (issue 38).
+PART2 = {"equivalent2": ("PostProcess.frag", EQUIVALENT),
+         "p2_one_change": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.25f;")]),
+         "p2_change_and_step_missing": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.25f;"),
+                                                             ("v3RetColour = bloom(v3RetColour, v2UV);", "")])}
 
 
 def write_mutant(source, out, part, name, file, changes):

@@ -31,7 +31,7 @@ set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weig
     bloom_after full_res_offsets ceil_levels swapped_subroutines viewport_reset pass_count
     no_compile shader_error shader_bytes crash)
 set(GRADE_PART1 reference1 shaders1 equivalent1 p1_steps_missing p1_one_constant p1_middle_grey_1_0)
-set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias)
+set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias p2_one_change p2_change_and_step_missing)
 # A sanitized build's submissions are built sanitized too: check_reports.py expects UBSan's report for
 # the crash submission there.
 if(T10_SANITIZE)
