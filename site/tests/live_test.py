@@ -234,8 +234,8 @@ def check_controls(browser, session, stage, need, changes, tries, min_changed, o
         error = evaluate(browser, session, f"{SET_CONTROL}({json.dumps(stage)}, {json.dumps(name)}, {json.dumps(value)})")
         if error:
             raise Failure(f"{stage}: {error}")
-        s = wait_until(browser, session, lambda c: any(x["stage"] == stage and (x["statusError"] or x["frames"] > before and
-                                                       x["state"] in ("rendered", "error")) for x in c),
+        s = wait_until(browser, session, lambda c: any(x["stage"] == stage and (x["statusError"] or x["state"] == "error" or
+                                                       x["frames"] > before and x["state"] == "rendered") for x in c),
                        timeout, f"{stage}: no new frame after --{name} {value}")
         s = next(x for x in s if x["stage"] == stage)
         if s["statusError"]:
