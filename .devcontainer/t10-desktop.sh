@@ -41,7 +41,7 @@ if ! x_answers >/dev/null 2>&1; then
     DISPLAY=$display setsid openbox </dev/null >"$logs/openbox.log" 2>&1 &
 fi
 if ! port_open "$web_port"; then
-    setsid websockify --web /usr/share/novnc "$web_port" "localhost:$vnc_port" </dev/null >"$logs/websockify.log" 2>&1 &
+    setsid websockify --web /usr/share/novnc "$web_port" "127.0.0.1:$vnc_port" </dev/null >"$logs/websockify.log" 2>&1 &
     wait_for "noVNC (websockify on port $web_port)" 15 port_open "$web_port"
 fi
 echo "t10-desktop: desktop $display (${geometry}, 24-bit) in the browser at http://localhost:$web_port/"

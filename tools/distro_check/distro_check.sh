@@ -63,52 +63,8 @@ fi
 mkdir -p "$work/apt-archives"
 [ "$modes" != none ] || exit 0 # MODES=none: only build (or keep) the cached root
 
-# The environment the commands run with: a login's, plus the host's pip and CA variables.
-passenv=(HOME="" PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 TERM=dumb)
-while IFS='=' read -r name value; do
-    case "$name" in
-        PIP_*|SSL_CERT_FILE|SSL_CERT_DIR|REQUESTS_CA_BUNDLE|CURL_CA_BUNDLE|GIT_SSL_CAINFO|http_proxy|https_proxy|no_proxy|HTTP_PROXY|HTTPS_PROXY|NO_PROXY)
-            passenv+=("$name=$value") ;;
-    esac
-done < <(env)
-
-# enter ROOT USER COMMAND: run COMMAND (a bash command line) in ROOT as USER (root or student).
-enter() {
-    local root=$1 user=$2 command=$3 home=/root
-    [ "$user" = root ] || home=/home/$user
-    unshare --mount --pid --fork --propagation private -- /bin/bash -s "$root" "$user" "$home" "$command" "${passenv[@]}" <<'INNER'
-set -eu
-root=$1 user=$2 home=$3 command=$4
-shift 4
-mount --bind "$root" "$root"
-mount -t proc proc "$root/proc"
-mount --rbind /dev "$root/dev"
-mount --rbind /sys "$root/sys"
-mount -t tmpfs -o mode=1777 tmpfs "$root/tmp"
-mount --bind "$(dirname "$root")/apt-archives" "$root/var/cache/apt/archives"
-# The host's CA bundle, resolver and pip configuration (copied, so the root's own files stay its own).
-cp -L /etc/resolv.conf "$root/etc/resolv.conf"
-mkdir -p "$root/etc/ssl/certs"
-cp -L /etc/ssl/certs/ca-certificates.crt "$root/etc/ssl/certs/ca-certificates.crt"
-[ ! -f /etc/pip.conf ] || cp -L /etc/pip.conf "$root/etc/pip.conf"
-if [ -n "${PIP_FIND_LINKS:-}" ] && [ -d "$PIP_FIND_LINKS" ]; then
-    mkdir -p "$root$PIP_FIND_LINKS" && mount --bind -o ro "$PIP_FIND_LINKS" "$root$PIP_FIND_LINKS"
-fi
-cd "$root"
-mkdir -p .host
-pivot_root . .host
-umount -l /.host
-rmdir /.host
-cd /
-env=()
-for kv in "$@"; do
-    case "$kv" in HOME=*) env+=("HOME=$home") ;; *) env+=("$kv") ;; esac
-done
-[ "$user" = root ] || env+=("USER=$user" "LOGNAME=$user")
-if [ "$user" = root ]; then exec env -i "${env[@]}" /bin/bash -c "cd && $command"; fi
-exec runuser -u "$user" -- env -i "${env[@]}" /bin/bash -c "cd && $command"
-INNER
-}
+# passenv and enter ROOT USER COMMAND (tools/distro_check/enter.sh, shared with make devcontainer-check).
+. "$(dirname "$0")/enter.sh"
 
 # run MODE LABEL COMMAND: one timed command, its output into the mode's log; prints status and time.
 status=0
