@@ -39,6 +39,7 @@ help:
 	@echo "make clean  remove $(BUILD)/, build-release/ and $(OUT)/"
 	@echo "make views  render every view (--view) of every stage into $(OUT)/views/, with each view's line in views.txt"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
+	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
 	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
@@ -154,6 +155,14 @@ site site-serve: PACKAGES += $(SITE_PACKAGES)
 site: configure
 	@! grep -Eq '^T10_(JEKYLL|CHROMIUM):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site
+
+# The site's live embeds in headless Chromium (site/tests/live_test.py), after building the site with the
+# web stages: every stage's embed renders, the exercises' controls change the frame and back, without
+# WebGL the pictures stay; screenshots in $(BUILD)/site-tests/live/. About two minutes on two cores, so
+# not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails.
+.PHONY: site-live
+site-live: site
+	cmake --build $(BUILD) --target site-live
 
 # site-serve rebuilds the site only when something it is made from (site/, the programs in $(BIN)/)
 # is newer than its index.html, then execs the server, so that stopping make stops the server too.

@@ -155,7 +155,8 @@
       input.type = "range";
       input.min = option.min;
       input.max = option.max;
-      input.step = option.type === "int" ? 1 : (option.max - option.min) / 200;
+      // A round step (0.01 for 0.05..2) so that values like 0.8 are on the slider.
+      input.step = option.type === "int" ? 1 : Math.pow(10, Math.floor(Math.log10((option.max - option.min) / 100)));
       input.value = value;
       shown = document.createElement("output");
       shown.textContent = value;
@@ -300,6 +301,15 @@
     options: function (stage) {
       var frame = document.querySelector(".live[data-stage='" + stage + "'] iframe.live-frame");
       return frame ? options(frame) : [];
+    },
+    // One embed, by its stage's name (the button does the same).
+    start: function (stage) {
+      var live = document.querySelector(".live[data-stage='" + stage + "'][data-state='idle']");
+      if (!live) return false;
+      var button = live.querySelector(".live-start");
+      if (button) button.hidden = true;
+      start(live);
+      return true;
     },
     // Every embed not yet started (?live=all does this on load).
     startAll: function () {
