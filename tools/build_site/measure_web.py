@@ -2,7 +2,8 @@
 """Measures the web stages (make web: out/web/<stage>/) for the site: the time from opening each
 stage's page to its first drawn frame (document.body.dataset.t10 turning "rendered", read with a
 MutationObserver installed before the page's own scripts), in headless Chromium drawing WebGL2 with
-ANGLE on Mesa's llvmpipe (on the CPU, as the web tests do), served from 127.0.0.1 with the browser cache off; the median of --runs loads per stage.
+ANGLE on SwiftShader (Chromium's software renderer), served from 127.0.0.1 with the browser cache
+off; the median of --runs loads per stage.
 Writes a JSON file that build_site.py reads (web_stages.py) and prints one line per stage.
 
 Each stage's entry carries a fingerprint of its files, so the site states a time only for the files
@@ -31,9 +32,9 @@ from browser_test import Browser, Failure, start_server  # noqa: E402  (the site
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tests", "web"))
 from web_test import RENDERERS  # noqa: E402  (the web tests' Chromium flags)
 
-# WebGL2 as the web tests draw it: ANGLE on Mesa's llvmpipe (it has EXT_texture_norm16, the stages'
-# GL_R16 luminance texture; SwiftShader lacks it).
-WEBGL_ARGS = RENDERERS["llvmpipe"]
+# WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer
+# (what a reader's browser falls back to; no EXT_texture_norm16, so the pages emulate GL_R16).
+WEBGL_ARGS = RENDERERS["swiftshader"]
 
 # Installed before the page's scripts: the moment dataset.t10 first leaves "loading".
 OBSERVER = r"""
