@@ -392,7 +392,9 @@ DEVCONTAINER_PACKAGES := $(sort $(PACKAGES) catch2 python3-venv $(TEST_PACKAGES)
 devcontainer-packages:
 	@echo $(DEVCONTAINER_PACKAGES)
 
-devcontainer-check: PACKAGES := mmdebstrap iproute2 git
+# The check's tools on the host: mmdebstrap, ip (its own network), git (the clone), python3 (the
+# Dockerfile's reader), ps (a uid no process uses).
+devcontainer-check: PACKAGES := mmdebstrap iproute2 git python3 procps
 devcontainer-check: deps
 	tools/devcontainer_check/devcontainer_check.sh . $(BUILD)/devcontainer-check
 
