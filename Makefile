@@ -50,6 +50,7 @@ help:
 	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
 	@echo "make bench-grader  grade the grader's test batches with a fresh cache: submissions per minute, CPU s and peak memory each"
 	@echo "make grade-sweep  every fitted constant of the grader's mistake catalogue across its fit's range: named, measured within 10 %"
+	@echo "make grade-jobs-check  a fork bomb graded beside honest submissions (--jobs 2) by a non-root grader, 20 rounds: none starved"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
 	@echo "make grader-packages  print the packages make grader installs (grader/platforms/install_grader.sh checks them)"
@@ -256,12 +257,15 @@ FLIP_VERSION := 1.7
 GRADE_VENV   := $(BUILD)/grade-venv
 REPORT       ?= grade-report
 GRADE_JOBS   ?= $(JOBS)
+# The interpreter FLIP's venv is made with (and runs with): it must be reachable by the user grading.
+GRADE_PYTHON ?= python3
 .PHONY: grade grade-args grade-deps grade-deps-or-skip
 grade-deps: PACKAGES += python3-venv
 grade-deps: deps
 	@[ -x $(GRADE_VENV)/bin/flip ] && $(GRADE_VENV)/bin/pip show flip-evaluator 2>/dev/null | grep -qx 'Version: $(FLIP_VERSION)' || { \
-	    rm -rf $(GRADE_VENV) && python3 -m venv $(GRADE_VENV) && \
+	    rm -rf $(GRADE_VENV) && $(GRADE_PYTHON) -m venv $(GRADE_VENV) && \
 	    $(GRADE_VENV)/bin/pip install --quiet --disable-pip-version-check flip-evaluator==$(FLIP_VERSION); }
+	@python3 grader/flip_reach.py $(GRADE_VENV)
 
 grade-args:
 	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)" ] || { echo 'usage: make grade PART=1|2|3 SUBMISSIONS="dir ..." [REPORT=dir] [GRADE_JOBS=N]'; exit 2; }
@@ -287,6 +291,16 @@ bench-grader: build grade-deps
 grade-sweep: PACKAGES += catch2 bubblewrap
 grade-sweep: build grade-deps
 	python3 grader/tests/sweep.py $(BIN)/t10-grade $(CURDIR) $(OUT)/grade-sweep $(GRADE_JOBS)
+
+# make grade-jobs-check: the proof that a grader other than root keeps its jobs apart (issue 38): a fork
+# bomb graded beside honest copies with --jobs 2, twenty rounds (grader/tests/isolation/fork_bomb_jobs.py;
+# make test runs two). As root the grader runs as an unprivileged uid; SKIPPED (and passes) where that
+# cannot run at all (no namespaces, or a checkout or FLIP out of other users' reach: make grade-deps says so).
+.PHONY: grade-jobs-check
+grade-jobs-check: PACKAGES += bubblewrap
+grade-jobs-check: build grade-deps
+	@python3 grader/tests/isolation/fork_bomb_jobs.py $(CURDIR) $(BIN)/t10-grade $(GRADE_VENV)/bin/flip $(BUILD)/grade-jobs-check 20; \
+	rc=$$?; [ $$rc -eq 77 ] && echo "grade-jobs-check: SKIPPED (above: why)" && exit 0; exit $$rc
 
 # The grader's tests need FLIP too (make test makes it); without it (no network for PyPI) they report
 # themselves skipped.

@@ -117,6 +117,8 @@ public:
 
     Report grade(const std::string& submission, const std::string& name, int job) const;
     Isolation isolation() const { return isolation_; }
+    // --jobs, or 1 where the jobs could not each have their own process limit (chooseIsolation says so).
+    int jobs() const { return config_.jobs; }
 
 private:
     void chooseIsolation();
@@ -148,6 +150,7 @@ private:
     std::string referenceDir_;
     Isolation isolation_ = Isolation::None;
     std::vector<uid_t> jobUids_;     // one per parallel job when root, else none
+    bool ownProcessLimit_ = false;   // not root: each sandbox's process limit counts its own job only
     fs::path workRoot_;              // private copies, programs and outputs of the jobs
     fs::path publicInputs_;          // the synthetic inputs, readable by the jobs
     std::vector<Mount> projectMounts_; // headers, libraries, common shaders and assets, read-only
@@ -199,13 +202,26 @@ void Grader::chooseIsolation() {
         jobUids_.clear();
         return;
     }
+    // Not root, every job runs as this user: its process limit must be counted in the job's own user
+    // namespace, or a submission that forks until refused leaves the job beside it no process.
+    std::string shared;
+    if (jobUids_.empty()) shared = probeOwnProcessLimit();
+    ownProcessLimit_ = jobUids_.empty() && shared.empty();
     std::cerr << "t10-grade: student code runs with isolation " << isolationName(isolation_);
     if (!jobUids_.empty()) {
         std::cerr << " (job uids";
         for (std::size_t i = 0; i < jobUids_.size(); ++i) std::cerr << (i ? "," : " ") << jobUids_[i];
         std::cerr << ")";
+    } else if (ownProcessLimit_) {
+        std::cerr << " (each job's process limit counted in its own user namespace)";
     }
     std::cerr << "\n";
+    if (!shared.empty() && config_.jobs > 1) {
+        std::cerr << "t10-grade: warning: the jobs cannot have process limits of their own here (" << shared
+                  << "; the grader is not root, so there is no uid per job): a submission that forks until refused "
+                     "would starve the one beside it, so submissions are graded one at a time (--jobs 1)\n";
+        config_.jobs = 1;
+    }
     if (isolation_ == Isolation::Uid) {
         struct stat info {};
         if (::stat(referenceStageDir().c_str(), &info) == 0 && (info.st_mode & S_IROTH)) {
@@ -219,6 +235,7 @@ SandboxRun Grader::sandbox(int job, const SandboxLimits& limits) const {
     SandboxRun run;
     run.isolation = isolation_;
     run.uid = jobUids_.empty() ? 0 : jobUids_[static_cast<std::size_t>(job) % jobUids_.size()];
+    run.ownProcessLimit = ownProcessLimit_;
     run.mounts = projectMounts_;
     run.limits = limits;
     return run;
@@ -468,7 +485,8 @@ bool writeResults(const Config& config, const Report& report, std::ostream& log)
     return false;
 }
 
-// Grades every submission of `config` with config.jobs threads; returns the exit code.
+// Grades every submission of `config` with grader.jobs() threads (config.jobs, or 1 where the jobs cannot
+// have process limits of their own); returns the exit code.
 int gradeAll(const Config& config) {
     const Grader grader(config);
     std::vector<Report> reports(config.submissions.size());
@@ -507,11 +525,11 @@ int gradeAll(const Config& config) {
         }
     } jobs;
     try {
-        for (int j = 0; j < std::min<int>(config.jobs, static_cast<int>(config.submissions.size())); ++j)
+        for (int j = 0; j < std::min<int>(grader.jobs(), static_cast<int>(config.submissions.size())); ++j)
             jobs.threads.emplace_back(worker, j);
     } catch (const std::system_error& error) {
         // Under a process limit: the threads started share the rest (the main thread when none did).
-        std::cerr << "t10-grade: warning: started " << jobs.threads.size() << " of " << config.jobs
+        std::cerr << "t10-grade: warning: started " << jobs.threads.size() << " of " << grader.jobs()
                   << " job threads (" << error.code().message() << "); the others' submissions wait for them\n";
         if (jobs.threads.empty()) worker(0);
     }

@@ -48,6 +48,7 @@ pid_t forkAlone() {
 }
 
 constexpr const char* kBwrap = "/usr/bin/bwrap";
+constexpr const char* kPrlimit = "/usr/bin/prlimit"; // util-linux (Essential in Debian)
 constexpr uid_t kInsideUid = 1000; // the uid the step sees inside the namespaces (never 0)
 
 struct TaskInfo {
@@ -283,6 +284,32 @@ std::string probeNamespaces(uid_t uid) {
     return "bwrap " + result.describe() + ": " + result.output;
 }
 
+std::string probeOwnProcessLimit() {
+    if (::access(kPrlimit, X_OK) != 0) return std::string(kPrlimit) + ": " + std::strerror(errno) + " (install util-linux)";
+    SandboxRun run;
+    run.isolation = Isolation::Namespaces;
+    run.ownProcessLimit = true;
+    run.limits.processes = 2; // the shell and its child; bwrap's pid 1 is added
+    run.limits.wallSeconds = 10;
+    char name[] = "/tmp/t10-grade-probe.XXXXXX";
+    const int fd = ::mkstemp(name);
+    if (fd < 0) return std::string("mkstemp: ") + std::strerror(errno);
+    ::close(fd);
+    RunResult result;
+    try {
+        // Counted with the user's processes outside the namespace (the grader, bwrap), the fork fails.
+        result = runSandboxed(run, {"/bin/sh", "-c", "/usr/bin/true & wait"}, name);
+    } catch (const Error& error) {
+        ::unlink(name);
+        return error.what();
+    }
+    ::unlink(name);
+    if (result.ok()) return "";
+    std::string output = result.output.substr(0, result.output.find('\n'));
+    return "this kernel counts the user's processes together across its user namespaces (Linux before 5.14): a "
+           "sandbox allowed 3 processes could not start its third (" + result.describe() + (output.empty() ? "" : ": " + output) + ")";
+}
+
 namespace {
 
 // What the child of runSandboxed needs, all of it made before fork(): the grader is multithreaded,
@@ -306,6 +333,10 @@ void planChild(const SandboxRun& run, const std::vector<std::string>& argv, cons
     if (namespaces) {
         for (const std::string& option : bwrapOptions(run)) plan.options += option + '\0';
         plan.command = {"bwrap", "--args", "3", "--"};
+        if (run.ownProcessLimit) {
+            // Soft and hard limit at once, inside the namespace; bwrap's pid 1 there counts too.
+            plan.command.insert(plan.command.end(), {kPrlimit, "--nproc=" + std::to_string(run.limits.processes + 1), "--"});
+        }
         plan.command.insert(plan.command.end(), argv.begin(), argv.end());
     } else {
         for (const std::string& arg : argv) plan.command.push_back(run.path(arg));
@@ -318,8 +349,12 @@ void planChild(const SandboxRun& run, const std::vector<std::string>& argv, cons
     plan.program = namespaces ? kBwrap : plan.command.front();
     // bwrap changes into the working directory inside (--chdir); the other isolations here.
     if (!run.workingDirectory.empty() && !namespaces) plan.directory = run.path(run.workingDirectory);
-    // A non-root grader keeps its own uid: RLIMIT_NPROC then counts its other processes too.
+    // A non-root grader keeps its own uid: RLIMIT_NPROC then counts its other processes too, unless the
+    // limit is set inside the sandbox's own user namespace (bwrap keeps the grader's limit: the user's
+    // count outside, which every namespace of it adds to, is checked against the limit of the
+    // namespace's creator).
     if (run.uid != 0) plan.processes = static_cast<rlim_t>(run.limits.processes);
+    else if (run.ownProcessLimit && namespaces) plan.processes = RLIM_INFINITY;
     else if (::geteuid() != 0) plan.processes = static_cast<rlim_t>(countTasksOf(::geteuid()) + run.limits.processes);
 
     plan.log = ::open(logFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOFOLLOW, 0600);

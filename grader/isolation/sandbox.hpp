@@ -3,7 +3,8 @@
 //               fixed view of the file system (the mounts below at neutral paths such as /submission,
 //               /out, /t10), a size-capped /tmp; killed with the grader, and at the wall limit the
 //               whole pid namespace dies. As root, bwrap itself runs as the job's unprivileged uid so
-//               that the process and file limits hold.
+//               that the process and file limits hold; as another user, the process limit is set
+//               inside the sandbox's user namespace, which counts the job's processes alone.
 //   uid:        where user namespaces cannot be had: the step runs as the job's unprivileged uid (the
 //               grader must be root), with the same limits and environment; it sees the host's file
 //               system with that uid's rights, and every process of the uid is killed after the run.
@@ -35,7 +36,7 @@ struct SandboxLimits {
     long memoryMiB = 4096;       // address space per process (no cgroup: see sandbox.cpp)
     long fileMiB = 64;           // the largest file a process may write (RLIMIT_FSIZE)
     int openFiles = 256;         // RLIMIT_NOFILE
-    int processes = 64;          // tasks (threads count) of the job's uid: llvmpipe's threads fit
+    int processes = 64;          // tasks (threads count) of the job: llvmpipe's threads fit
     long tmpMiB = 64;            // the tmpfs /tmp
 };
 
@@ -46,12 +47,22 @@ struct SandboxRun {
     std::vector<std::string> env;  // "NAME=value", the whole environment of the step
     std::string workingDirectory;  // inside path
     SandboxLimits limits;
+    // A grader other than root (uid 0 here) under namespaces: the process limit is set inside the
+    // sandbox's user namespace, where the kernel counts the job's processes alone (probeOwnProcessLimit).
+    // Otherwise such a grader's jobs share one count: the limit is what the user runs plus `processes`.
+    bool ownProcessLimit = false;
     // The host path of an inside path for isolations without a mount namespace.
     std::string path(const std::string& inside) const;
 };
 
 // Probes whether bwrap can start a sandbox here (as `uid` when not 0). "" when it can, else why not.
 std::string probeNamespaces(uid_t uid);
+// Whether a grader other than root can give each namespaces sandbox a process limit of its own: the
+// kernel counts a user's processes per user namespace (Linux 5.14 and later), so a limit set inside
+// the sandbox (with util-linux's prlimit) counts that job's processes only, whatever the user's other
+// jobs run. "" when it can (a sandbox with room for 3 processes starts 3 while the grader and bwrap
+// run outside it), else why not. Call it where bwrap works (probeNamespaces).
+std::string probeOwnProcessLimit();
 // Picks `count` uids no account and no process uses (the grader must be root to use them).
 std::vector<uid_t> pickJobUids(int count);
 // Kills every process of `uid` and returns once none is left (or after 5 s).

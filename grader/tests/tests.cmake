@@ -214,12 +214,13 @@ foreach(isolation namespaces uid)
     set_tests_properties("grade: hostile submissions are contained (${isolation})" PROPERTIES
                          SKIP_RETURN_CODE 77 RESOURCE_LOCK grade_hostile COST 900 TIMEOUT 600)
 endforeach()
-# As a user other than root every sandbox runs as that user, so the process limit is counted for all of
-# them together: while an attack forks until refused, a render of another test beside it can get no
-# thread and hang (a fitted submission timed out with an empty log in two runs of make test as a user).
-# There the hostile suites run alone. As root each job has a uid of its own.
+# As a user other than root every sandbox runs as that user. The grader sets each sandbox's process limit
+# inside its own user namespace, which Linux counts apart from the user's other processes since 5.14
+# (issue 38; "grade: as a user, a fork bomb ..." proves it). On an older kernel the count is the user's,
+# shared by every test: an attack that forks until refused could leave a render of another test beside
+# it without a thread (seen as timeouts with an empty log), so there the hostile suites run alone.
 execute_process(COMMAND id -u OUTPUT_VARIABLE T10_TEST_UID OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(NOT T10_TEST_UID STREQUAL "0")
+if(NOT T10_TEST_UID STREQUAL "0" AND CMAKE_HOST_SYSTEM_VERSION VERSION_LESS 5.14)
     set_tests_properties("grade: hostile submissions are contained (namespaces)" "grade: hostile submissions are contained (uid)"
                          PROPERTIES RUN_SERIAL TRUE)
 endif()

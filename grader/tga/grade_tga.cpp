@@ -432,8 +432,15 @@ Job prepareJob(const Config& config) {
     const uid_t uid = root && config.isolation != "none" ? pickJobUids(1).front() : 0;
     job.base.isolation = chooseIsolation(config.isolation, uid, "t10-grade-tga", std::cerr);
     job.base.uid = job.base.isolation == Isolation::None ? 0 : uid;
+    // Not root: the loader's process limit is counted in its sandbox's own user namespace where the
+    // kernel can, else with every process of this user (graders beside it share it).
+    std::string shared;
+    if (job.base.isolation == Isolation::Namespaces && job.base.uid == 0) shared = probeOwnProcessLimit();
+    job.base.ownProcessLimit = job.base.isolation == Isolation::Namespaces && job.base.uid == 0 && shared.empty();
     std::cerr << "t10-grade-tga: the loader runs with isolation " << isolationName(job.base.isolation);
     if (job.base.uid != 0) std::cerr << " (job uids " << job.base.uid << ")";
+    if (job.base.ownProcessLimit) std::cerr << " (its process limit counted in its own user namespace)";
+    if (!shared.empty()) std::cerr << " (its process limit shared with this user's other processes: " << shared << ")";
     std::cerr << "\n";
     std::random_device random;
     job.work = fs::temp_directory_path() / ("t10-grade-tga." + std::to_string(::getpid()) + "." + std::to_string(random()));
