@@ -5,6 +5,7 @@
 
 #include "report/output.hpp"
 #include "t10/error.hpp"
+#include "t10/image_io.hpp"
 #include "t10/json.hpp"
 
 #include <algorithm>
@@ -27,6 +28,11 @@ namespace fs = std::filesystem;
 // PrairieLearn rejects results over 1 MB: images are added while the file stays under this many bytes
 // (each text field is capped below, so the text alone stays far under it).
 constexpr std::size_t kPrairieLearnLimit = 1000 * 1000;
+// Gradescope states no size for results.json; a large one loads slowly on every student's page. The
+// grader holds it to 500 kB: images take at most 300 kB of it, and the text, every field capped below,
+// stays far under the rest (36 steps of 4 KiB at most, the summary 16 KiB twice).
+constexpr std::size_t kGradescopeLimit = 500 * 1000;
+constexpr std::size_t kGradescopeImageBudget = 300 * 1000;
 // Student-facing text: a compiler's full log can run to megabytes; the report keeps all of it.
 constexpr std::size_t kMessageCap = 16 * 1024;
 constexpr std::size_t kTestOutputCap = 4 * 1024;
@@ -140,11 +146,66 @@ std::string base64(const std::string& bytes) {
     return out;
 }
 
-std::string gradescope(const Report& report) {
+// A PNG of the report folder as a JPEG data URI, about a quarter of the PNG's size (the grader's frames
+// are noisy renders and heat-maps, which PNG compresses poorly). Quality 90: a picture to look at; the
+// checks measured the PNGs, which report.html shows.
+constexpr int kJpegQuality = 90;
+std::string jpegDataUri(const std::string& path) {
+    const std::vector<std::uint8_t> jpeg = encodeJpeg(readPng(path), kJpegQuality, path);
+    return "data:image/jpeg;base64," + base64(std::string(jpeg.begin(), jpeg.end()));
+}
+
+// The PNG files of a failed image check, labelled for the student.
+std::vector<std::pair<std::string, std::string>> checkImages(const Check& c) {
+    return {{"your frame", c.studentImage}, {"the reference", c.referenceImage}, {"the difference (heat-map)", c.heatMap}};
+}
+
+// Gradescope's top-level output as HTML: the summary, then each failed image check with the student's
+// frame, the reference and the heat-map inline (JPEG data URIs, shown at 320 pixels wide: the grader's
+// frames are 160 pixels wide at most, about 10 kB each as JPEG). An image already shown (a frame and a
+// FLIP check of one case show the same student frame) is named, not repeated; images that would take
+// the result past kGradescopeImageBudget are named as left out (report.html has every one).
+std::string gradescopeHtml(const Report& report, const std::string& dir) {
+    std::string html = "<pre>" + htmlEscape(summary(report)) + "</pre>\n";
+    std::map<std::string, std::string> shown; // data URI -> where it was first shown
+    std::string omitted;
+    std::size_t imageBytes = 0;
+    for (const Check& c : report.checks) {
+        if (c.passed || c.heatMap.empty()) continue;
+        std::string row;
+        for (const auto& [label, file] : checkImages(c)) {
+            std::error_code error;
+            const fs::path path = fs::path(dir) / file;
+            if (file.empty() || !fs::is_regular_file(path, error)) continue;
+            const std::string url = jpegDataUri(path.string());
+            const std::string caption = "<br><small>" + htmlEscape(label) + "</small>";
+            const auto before = shown.find(url);
+            if (before != shown.end()) {
+                row += "<td>(" + htmlEscape(label) + ": as in " + htmlEscape(before->second) + ")</td>";
+                continue;
+            }
+            if (imageBytes + url.size() > kGradescopeImageBudget) {
+                omitted += (omitted.empty() ? "" : ", ") + c.id + ": " + label;
+                row += "<td>(" + htmlEscape(label) + ": left out, see report.html)</td>";
+                continue;
+            }
+            imageBytes += url.size();
+            shown.emplace(url, c.id);
+            row += "<td><img src=\"" + url + "\" alt=\"" + htmlEscape(c.id + ": " + label) +
+                   "\" style=\"width:320px;image-rendering:pixelated\">" + caption + "</td>";
+        }
+        html += "<h4>" + htmlEscape(c.id) + "</h4>\n<p>" + htmlEscape(c.diagnosis) + "<br><small>measured: " +
+                htmlEscape(c.measured) + "</small></p>\n<table><tr>" + row + "</tr></table>\n";
+    }
+    if (!omitted.empty()) html += "<p>Images left out to keep the result small: " + htmlEscape(omitted) + " (they are in report.html).</p>\n";
+    return html;
+}
+
+std::string gradescope(const Report& report, const std::string& dir) {
     std::ostringstream out;
     // `score` is given, so Gradescope shows report.json's score; the tests' points add up to it.
     out << "{\n  \"score\": " << report.score() << ",\n  \"execution_time\": " << static_cast<long>(std::lround(report.seconds))
-        << ",\n  \"output\": " << jsonQuoted(summary(report)) << ",\n  \"output_format\": \"text\""
+        << ",\n  \"output\": " << jsonQuoted(gradescopeHtml(report, dir)) << ",\n  \"output_format\": \"html\""
         << ",\n  \"visibility\": \"visible\",\n  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
     const std::vector<StepResult> steps = stepResults(report.scored());
     for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -156,7 +217,11 @@ std::string gradescope(const Report& report) {
             << stepNumber(s.step) << "\"]}";
     }
     out << "\n  ]\n}\n";
-    return out.str();
+    std::string text = out.str();
+    if (text.size() > kGradescopeLimit) throw Error("the Gradescope result of " + report.submission + " is " +
+                                                    std::to_string(text.size()) + " bytes, over the " +
+                                                    std::to_string(kGradescopeLimit) + " this grader holds it to");
+    return text;
 }
 
 std::string prairieLearn(const Report& report, const std::string& dir) {
@@ -286,7 +351,7 @@ void writeFormats(const Report& report, const std::vector<std::string>& formats,
     if (error) throw Error(dir + ": cannot create: " + error.message());
     for (const std::string& format : formats) {
         if (format == "gradescope") {
-            writeOutputFile(dir + "/gradescope-results.json", gradescope(report), "Gradescope results");
+            writeOutputFile(dir + "/gradescope-results.json", gradescope(report, dir), "Gradescope results");
         } else if (format == "prairielearn") {
             writeOutputFile(dir + "/prairielearn-results.json", prairieLearn(report, dir), "PrairieLearn results");
         } else if (format == "classroom") {

@@ -252,25 +252,45 @@ std::string channelNames(const Imf::Header& header) {
 
 } // namespace
 
-void writePng(const std::string& path, const Image8& image) {
-    checkImage(path, image, true);
-    // Flip into a top-row-first copy; stb's global flip flag would be shared state between callers.
+namespace {
+
+// A top-row-first copy, as PNG and JPEG store rows; stb's global flip flag would be shared state
+// between callers.
+std::vector<std::uint8_t> topRowFirst(const Image8& image) {
     const std::size_t rowBytes = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.channels);
     std::vector<std::uint8_t> topFirst(image.data.size());
     for (int y = 0; y < image.height; ++y)
         std::memcpy(topFirst.data() + static_cast<std::size_t>(y) * rowBytes,
                     image.data.data() + static_cast<std::size_t>(image.height - 1 - y) * rowBytes, rowBytes);
+    return topFirst;
+}
+
+void appendBytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
+} // namespace
+
+void writePng(const std::string& path, const Image8& image) {
+    checkImage(path, image, true);
+    const std::vector<std::uint8_t> topFirst = topRowFirst(image);
+    const int rowBytes = image.width * image.channels;
     // Encoded in memory, then written all or nothing: stb's own file writer ignores fwrite's result.
     std::vector<std::uint8_t> encoded;
-    const auto append = [](void* context, void* data, int size) {
-        auto* out = static_cast<std::vector<std::uint8_t>*>(context);
-        const auto* bytes = static_cast<const std::uint8_t*>(data);
-        out->insert(out->end(), bytes, bytes + size);
-    };
-    if (!stbi_write_png_to_func(append, &encoded, image.width, image.height, image.channels, topFirst.data(),
-                                static_cast<int>(rowBytes)))
+    if (!stbi_write_png_to_func(appendBytes, &encoded, image.width, image.height, image.channels, topFirst.data(), rowBytes))
         fail(path, "cannot encode PNG");
     writeFileAtomically(path, encoded.data(), encoded.size(), "PNG");
+}
+
+std::vector<std::uint8_t> encodeJpeg(const Image8& image, int quality, const std::string& name) {
+    checkImage(name, image, true);
+    const std::vector<std::uint8_t> topFirst = topRowFirst(image);
+    std::vector<std::uint8_t> encoded;
+    if (!stbi_write_jpg_to_func(appendBytes, &encoded, image.width, image.height, image.channels, topFirst.data(), quality))
+        fail(name, "cannot encode JPEG");
+    return encoded;
 }
 
 Image8 readPng(const std::string& path) {

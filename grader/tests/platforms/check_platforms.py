@@ -117,6 +117,12 @@ def check_results(fmt, report_dir, names):
                 errors.append(f"{name}: {status} is the student's fault, yet not gradable")
         if fmt == "classroom" and data["status"] != ("pass" if full else "fail"):
             errors.append(f"{name}: classroom status {data['status']}")
+        if fmt == "gradescope" and name == "weight":
+            # Each failed image check shows the student's frame, the reference and the heat-map inline.
+            alts = re.findall(r'<img [^>]*alt="([^"]*)"', data["output"]) if data.get("output_format") == "html" else []
+            for what in ("your frame", "the reference", "the difference (heat-map)"):
+                if not any(what in alt for alt in alts) and "left out" not in data["output"]:
+                    errors.append(f"{name}: a failed image check, but no inline image of {what} and no note that it was left out")
         if fmt == "prairielearn" and name == "weight":
             labels = [i["label"] for i in data.get("images", [])]
             if not any("heat-map" in label for label in labels) and "Images left out" not in data["output"]:
@@ -168,7 +174,9 @@ def mutations(fmt):
                 ("a test's name missing", lambda d: {**d, "tests": [{k: v for k, v in d["tests"][0].items() if k != "name"}]}),
                 ("a score as a string", set_top("score", "82")),
                 ("the top score over the tests' total", set_top("score", 100.5)),
-                ("over 1 MB", set_top("output", pad))]
+                ("over 1 MB", set_top("output", pad)),
+                ("an image fetched from elsewhere", set_top("output", '<img src="http://example.com/a.png">')),
+                ("an inline image that is not a JPEG", set_top("output", '<img src="data:image/jpeg;base64,aGVsbG8=">'))]
     if fmt == "prairielearn":
         return [("score over 1", set_top("score", 1.5)),
                 ("no score while gradable", drop("score")),

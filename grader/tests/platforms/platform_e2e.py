@@ -85,6 +85,12 @@ def gradescope(source, build, submission, out):
         failed = [t["number"] for t in data["tests"] if t["status"] == "failed"]
         if not 0 < data["score"] < 100 or "20" not in failed:
             errors.append(f"gradescope, mistaken: score {data['score']}, failed steps {failed}: expected step 20 to fail")
+        # Its failed frame check is shown with pictures: the student's frame, the reference, the heat-map.
+        if data.get("output_format") != "html" or "the difference (heat-map)" not in data["output"] or "<img" not in data["output"]:
+            errors.append(f"gradescope, mistaken: no inline heat-map in the output ({data.get('output_format')}, "
+                          f"{len(data['output'])} characters)")
+        else:
+            print(f"gradescope, mistaken: {data['output'].count('<img')} inline images, results.json {len(json.dumps(data))} bytes")
     shutil.rmtree(os.path.join(root, "submission"))
     os.makedirs(os.path.join(root, "submission"))
     os.remove(os.path.join(root, "results", "results.json"))

@@ -1,10 +1,14 @@
 #!/usr/bin/env python3
 """Validates a Gradescope autograder results.json against the contract of Gradescope's autograder
 specification: the known top-level and test fields, their types, the enumerations of output_format,
-visibility and status, scores within [0, max_score], and the size limit we hold it to.
+visibility and status, scores within [0, max_score], and the size limit we hold it to. An output in
+HTML may show images only inline: every <img> a data URI whose bytes are a JPEG or PNG.
 
   validate_gradescope.py RESULTS_JSON...     prints every fault; exit 0 when there is none, 1 otherwise
 validate(data, raw) is used by check_platforms.py."""
+import base64
+import binascii
+import re
 import sys
 
 from validate_common import check_strings, each_test, is_number, main
@@ -15,8 +19,30 @@ TOP = {"score", "execution_time", "output", "output_format", "test_output_format
        "stdout_visibility", "extra_data", "tests", "leaderboard"}
 TEST = {"score", "max_score", "status", "name", "name_format", "number", "output", "output_format", "tags",
         "visibility", "extra_data"}
-# Gradescope states no size limit; results this size render slowly, and ours stay far below it.
-LIMIT = 1000 * 1000
+# Gradescope states no size limit; a large result loads slowly on every student's page. The grader
+# holds its results to 500 kB (platforms/formats.cpp, kGradescopeLimit), images included.
+LIMIT = 500 * 1000
+IMG = re.compile(r"<img\b[^>]*>", re.I)
+SRC = re.compile(r"""\bsrc\s*=\s*["']([^"']*)["']""", re.I)
+DATA = re.compile(r"data:image/(jpeg|png);base64,([A-Za-z0-9+/=]+)$")
+MAGIC = {"jpeg": b"\xff\xd8\xff", "png": b"\x89PNG\r\n\x1a\n"}
+
+
+def check_images(html, where, errors):
+    """Every <img> of an HTML output: a data URI (no request leaves the student's page) of a JPEG or PNG."""
+    for tag in IMG.findall(html):
+        src = SRC.search(tag)
+        data = DATA.match(src.group(1)) if src else None
+        if not data:
+            errors.append(f"{where}: an image that is not an inline JPEG or PNG: {tag[:120]!r}")
+            continue
+        try:
+            raw = base64.b64decode(data.group(2), validate=True)
+        except binascii.Error:
+            errors.append(f"{where}: an image whose base64 does not decode: {tag[:120]!r}")
+            continue
+        if not raw.startswith(MAGIC[data.group(1)]):
+            errors.append(f"{where}: an image whose bytes are not a {data.group(1).upper()}: {tag[:120]!r}")
 EPSILON = 0.005  # points are written to 0.01
 
 
@@ -35,6 +61,8 @@ def validate(data, raw):
     if "execution_time" in data and not (is_number(data["execution_time"]) and data["execution_time"] >= 0):
         errors.append(f"execution_time {data['execution_time']!r} is not a number >= 0")
     check_strings(data, ("output",), "", errors)
+    if data.get("output_format") == "html" and isinstance(data.get("output"), str):
+        check_images(data["output"], "output", errors)
     for key in ("output_format", "test_output_format"):
         if key in data and data[key] not in FORMATS:
             errors.append(f"{key} {data[key]!r} is not one of {sorted(FORMATS)}")
@@ -49,6 +77,8 @@ def validate(data, raw):
         check_strings(test, ("name", "output", "number"), where + ".", errors)
         if not test.get("name"):
             errors.append(f"{where}: no name")
+        if test.get("output_format") == "html" and isinstance(test.get("output"), str):
+            check_images(test["output"], where + ".output", errors)
         if "output_format" in test and test["output_format"] not in FORMATS:
             errors.append(f"{where}.output_format {test['output_format']!r} is not one of {sorted(FORMATS)}")
         if "visibility" in test and test["visibility"] not in VISIBILITY:

@@ -8,12 +8,16 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace t10 {
 
 // 8-bit grey, RGB or RGBA. The file's top row is the image's last row (row 0 is the bottom).
 void writePng(const std::string& path, const Image8& image);
 Image8 readPng(const std::string& path);
+// The image as a JPEG in memory (quality 1-100), for pictures that are looked at, not measured (the
+// grader's images inline in a platform's result); `name` is the one its errors give.
+std::vector<std::uint8_t> encodeJpeg(const Image8& image, int quality, const std::string& name);
 
 // What an EXR may be before its pixels are allocated. The defaults accept any side up to 65536; a
 // caller that renders the image passes its GL context's limits and the memory it has. The reasons
