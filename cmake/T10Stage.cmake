@@ -6,6 +6,14 @@
 function(t10_add_stage folder)
     add_executable(${folder} ${PROJECT_SOURCE_DIR}/${folder}/Tutorial10.cpp)
     target_link_libraries(${folder} PRIVATE t10_common t10_flags)
+    if(EMSCRIPTEN)
+        # The browser build: the folder's files are packaged at this path of the page's file system.
+        target_compile_definitions(${folder} PRIVATE
+            T10_STAGE_NAME="${folder}"
+            T10_STAGE_SHADER_DIR="${T10_WEB_ROOT}/${folder}")
+        t10_web_stage(${folder} ${PROJECT_SOURCE_DIR}/${folder})
+        return()
+    endif()
     target_compile_definitions(${folder} PRIVATE
         T10_STAGE_NAME="${folder}"
         T10_STAGE_SHADER_DIR="${PROJECT_SOURCE_DIR}/${folder}")

@@ -44,9 +44,17 @@ function(t10_add_student_stages)
         set(target student_${name})
         add_executable(${target} EXCLUDE_FROM_ALL ${child}/Tutorial10.cpp)
         target_link_libraries(${target} PRIVATE t10_common t10_student_flags)
-        target_compile_definitions(${target} PRIVATE
-            T10_STAGE_NAME="${target}"
-            T10_STAGE_SHADER_DIR="${child}")
+        if(EMSCRIPTEN)
+            # The browser build (`make web STAGE=student_<name>`): the folder packaged with the page.
+            target_compile_definitions(${target} PRIVATE
+                T10_STAGE_NAME="${target}"
+                T10_STAGE_SHADER_DIR="${T10_WEB_ROOT}/${target}")
+            t10_web_stage(${target} ${child})
+        else()
+            target_compile_definitions(${target} PRIVATE
+                T10_STAGE_NAME="${target}"
+                T10_STAGE_SHADER_DIR="${child}")
+        endif()
         list(APPEND names ${target})
         string(APPEND lines "${target} ${child}\n")
     endforeach()

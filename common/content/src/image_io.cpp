@@ -10,6 +10,7 @@
 
 #include "t10/error.hpp"
 
+#ifndef __EMSCRIPTEN__ // OpenEXR has no WebAssembly build: the browser build has no EXR files
 // OpenEXR's and Imath's headers trip -Wshadow and -Wconversion when they are not on a system
 // include path (as with plain pkg-config flags); CMake's imported target marks them SYSTEM.
 #pragma GCC diagnostic push
@@ -23,6 +24,7 @@
 #include <ImfRgbaFile.h>
 #include <ImfStdIO.h>
 #pragma GCC diagnostic pop
+#endif
 #include <stb_image.h>
 #include <stb_image_write.h>
 
@@ -78,6 +80,7 @@ float getFloat(const std::uint8_t* in, bool littleEndian) {
     return value;
 }
 
+#ifndef __EMSCRIPTEN__
 // An OpenEXR input stream over bytes already in memory (the file, read by readFile, or fuzz data).
 class MemoryIStream final : public Imf::IStream {
 public:
@@ -250,6 +253,8 @@ std::string channelNames(const Imf::Header& header) {
     return names.empty() ? "none" : names;
 }
 
+#endif
+
 } // namespace
 
 namespace {
@@ -316,6 +321,7 @@ Image8 readPng(const std::string& path) {
     return image;
 }
 
+#ifndef __EMSCRIPTEN__
 void writeExr(const std::string& path, const ImageF& image) {
     checkImage(path, image, true);
     const int w = image.width, h = image.height, c = image.channels;
@@ -401,6 +407,18 @@ ImageF decodeExr(const std::uint8_t* bytes, std::size_t size, const std::string&
         fail(name, std::string("cannot read EXR: ") + e.what());
     }
 }
+#else
+// The browser build: no OpenEXR (it has no WebAssembly build), so no EXR file is read or written.
+namespace {
+[[noreturn]] void noExr(const std::string& name) {
+    fail(name, "EXR files are not available in the web build (OpenEXR has no WebAssembly build)");
+}
+} // namespace
+
+void writeExr(const std::string& path, const ImageF&) { noExr(path); }
+ImageF readExr(const std::string& path, const ExrLimits&) { noExr(path); }
+ImageF decodeExr(const std::uint8_t*, std::size_t, const std::string& name, const ExrLimits&) { noExr(name); }
+#endif
 
 std::size_t clampNonFinite(ImageF& image, float maximum) {
     const std::size_t channels = static_cast<std::size_t>(std::max(image.channels, 1));

@@ -30,7 +30,7 @@ namespace t10 {
 
 namespace {
 
-constexpr double kTitleInterval = 0.5; // seconds between title updates
+[[maybe_unused]] constexpr double kTitleInterval = 0.5; // seconds between title updates (not in the browser build)
 
 using Clock = std::chrono::steady_clock;
 
@@ -91,9 +91,12 @@ App::App(const Stage& stage, const Settings& settings, Context& context)
         if (const std::string note = tuneSceneForWindow(*scene_); !note.empty()) std::cout << note << "\n";
         input_ = std::make_unique<CameraInput>(context_.window(), camera_);
         viewKeys_ = std::make_unique<ViewKeys>(context_.window());
+#ifndef __EMSCRIPTEN__
+        // (The web build has no --input, and its page's controls stand for the UI.)
         if (!scene.input.empty()) glfwSetWindowAttrib(context_.window(), GLFW_RESIZABLE, GLFW_FALSE);
         // After the camera's callbacks, so that the UI's chain to them.
         if (stage_.makeUi != nullptr) ui_ = stage_.makeUi(context_.window());
+#endif
     }
     if (stage_.timers != nullptr) stage_.timers->create();
     if (!settings_.outputs.capturePassesDir.empty()) observer_ = makePassCapture(settings_.outputs.capturePassesDir);
@@ -190,6 +193,7 @@ void App::checkGlErrors(const std::string& when) {
     if (!glErrors_->empty()) throw Error("GL error " + when + ":" + glErrors_->describe());
 }
 
+#ifndef __EMSCRIPTEN__ // the browser build's loop and runStage are in app_web.cpp
 int App::run() {
     // Every output asked for is written after the last frame, or the run fails saying why.
     if (settings_.run.frames == 0 && context_.isWindow() && wantsOutputs(settings_.outputs))
@@ -259,6 +263,8 @@ int App::run() {
     return 0;
 }
 
+#endif
+
 void App::followSize(int frame) {
     if (static_cast<std::size_t>(frame) < settings_.run.resizeSequence.size()) {
         // Scripted resize (tests): the same path a window's size change takes.
@@ -300,6 +306,7 @@ void App::printFrameTimes(const std::vector<double>& times) const {
               << " ms\n";
 }
 
+#ifndef __EMSCRIPTEN__
 int runStage(int argc, const char* const* argv, const Stage& stage) {
     Settings settings;
     const int parsed = parseSettings(argc, argv, stage.name, stage.summary, settings, stage.addOptions);
@@ -322,5 +329,7 @@ int runStage(int argc, const char* const* argv, const Stage& stage) {
         return 1;
     }
 }
+
+#endif
 
 } // namespace t10

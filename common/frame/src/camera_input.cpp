@@ -36,7 +36,11 @@ void CameraInput::update(double seconds) {
     double x = 0.0;
     double y = 0.0;
     glfwGetCursorPos(window_, &x, &y);
-    const bool looking = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    bool looking = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+#ifdef __EMSCRIPTEN__
+    // A page: the left button (and a finger, which emscripten's GLFW reports as it) looks too.
+    looking = looking || glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+#endif
     if (looking && lookActive_) camera_.look(static_cast<float>(x - lastCursorX_), static_cast<float>(y - lastCursorY_));
     lookActive_ = looking;
     lastCursorX_ = x;

@@ -17,6 +17,7 @@ namespace t10 {
 
 namespace {
 
+#ifndef __EMSCRIPTEN__ // the browser build has no loader whose entry points could be swapped
 // The loader's entry points while a DrawObservation is alive, and whom to tell. GL entry points are
 // plain function pointers that carry no context, so this is the one per-process slot they can reach.
 struct ObservedDraws {
@@ -41,6 +42,7 @@ void GLAD_API_PTR observedDrawArrays(GLenum mode, GLint first, GLsizei count) {
     slot.drawArrays(mode, first, count);
     slot.observer->afterDraw();
 }
+#endif
 
 class PassCapture final : public FrameObserver {
 public:
@@ -103,6 +105,12 @@ private:
 
 } // namespace
 
+#ifdef __EMSCRIPTEN__
+DrawObservation::DrawObservation(FrameObserver&) {
+    throw Error("--capture-passes is not available in the web build (WebGL 2's calls cannot be observed)");
+}
+DrawObservation::~DrawObservation() = default;
+#else
 DrawObservation::DrawObservation(FrameObserver& observer) {
     ObservedDraws& slot = observedDraws();
     if (slot.observer != nullptr) throw Error("a draw observation is already installed (one at a time)");
@@ -119,6 +127,7 @@ DrawObservation::~DrawObservation() {
     glad_glDrawArrays = slot.drawArrays;
     slot = ObservedDraws{};
 }
+#endif
 
 std::unique_ptr<FrameObserver> makePassCapture(const std::string& dir) { return std::make_unique<PassCapture>(dir); }
 

@@ -35,9 +35,13 @@ private:
 Image8 readDefaultFramebuffer(int width, int height) {
     Image8 image(width, height, 3);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+#ifdef __EMSCRIPTEN__
+    glReadBuffer(GL_BACK); // WebGL 2's default framebuffer has only its back buffer
+#else
     GLint drawBuffer = GL_BACK;
     glGetIntegerv(GL_DRAW_BUFFER, &drawBuffer);
     glReadBuffer(static_cast<GLenum>(drawBuffer));
+#endif
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.data.data());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);

@@ -60,6 +60,18 @@ public:
     // stage's pass timers (and inside the observer's hooks, if one is set). No input, UI, outputs or swap (the bench driver is handed exactly this).
     void renderFrame();
 
+#ifdef __EMSCRIPTEN__
+    // The browser build (app_web.cpp): run() hands the loop to the browser, which calls webFrame()
+    // once per animation frame; a frame is drawn only when something asked for one.
+    void webFrame();
+    // Module.t10Set(name, value): the command line `args` (the page's, plus every setting made
+    // since) parsed again with `--name value` appended; "" or the message the binary would print.
+    std::string webSet(const std::string& name, const std::string& value);
+    // Module.t10Options(): the stage's options as JSON (names, types, ranges, current values).
+    std::string webOptions() const;
+    void setWebArguments(std::vector<std::string> args) { webArgs_ = std::move(args); }
+#endif
+
 private:
     void loadScene(); // --scene (or the built-in scene) and --camera
     void resize(int width, int height);
@@ -90,6 +102,12 @@ private:
     std::unique_ptr<ViewService> views_;
     std::unique_ptr<ViewKeys> viewKeys_;
     std::unique_ptr<FrameObserver> observer_;
+#ifdef __EMSCRIPTEN__
+    std::vector<std::string> webArgs_; // argv[1..] as the page gave it, then each t10Set
+    int webPending_ = 0;               // frames still to draw before the page is "rendered"
+    int webDrawn_ = 0;                 // frames drawn so far (dataset.t10Frames)
+    double webLast_ = 0.0;             // the last webFrame()'s time, for the camera keys' speed
+#endif
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).

@@ -1,0 +1,92 @@
+# The browser build (`make web`, or `emcmake cmake --preset web` with any emscripten): every stage
+# compiled to WebAssembly + WebGL 2 from the same Tutorial10.cpp and shaders, into
+# T10_WEB_OUTPUT_DIR/<stage>/ (index.html, <stage>.js, .wasm, .data). Included from the top-level
+# CMakeLists.txt instead of the desktop packages when the toolchain is emscripten's.
+#
+# What the desktop build finds as packages comes from elsewhere here:
+#   GLFW      emscripten's own (-sUSE_GLFW=3: the GLFW 3.2 API, in JavaScript)
+#   GL        OpenGL ES 3.0 (WebGL 2) through common/platform/web/include/glad/gl.h
+#   glm, CLI11, nlohmann-json, stb, tinygltf  the same header-only libraries as the desktop build
+#             (Debian: libglm-dev libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev, or
+#             Homebrew's), found outside emscripten's sysroot and linked into the build tree one
+#             by one, so that no other host header reaches the WebAssembly compiler; stb's and
+#             tinygltf's code is compiled here (cmake/T10HeaderOnly.cmake)
+#   OpenEXR   none: it has no WebAssembly build; --exr and --input say so (image_io.cpp)
+# Version notes (emscripten 3.1.6 on Debian 12, 3.1.69 on Debian 13): exceptions are off by default
+# in both (-fexceptions at compile and link); every WebGL extension our context enables is enabled
+# by name (context_web.cpp), since 3.1.6 enables all and later versions a list; the page is our own
+# (common/platform/web/index.html.in), not emcc's HTML output, whose minifier crashes in 3.1.6 at -O1
+# and above; explicit uniform locations are mapped by the platform (gl_web.cpp), not by
+# -sGL_EXPLICIT_UNIFORM_LOCATION, which in 3.1.6 drops a glUniform* made before any
+# glGetUniformLocation.
+set(T10_WEB_OUTPUT_DIR ${PROJECT_BINARY_DIR}/web CACHE PATH "Where each web stage's folder is written")
+set(T10_BUILD_TESTS OFF CACHE BOOL "" FORCE) # the tests run natively (make test) and drive the pages
+
+add_compile_options(-fexceptions)
+add_link_options(-fexceptions)
+
+# The host's header-only libraries, each linked into host-include/ by name.
+set(T10_WEB_HOST_PREFIXES /usr/include /usr/local/include /opt/homebrew/include
+    CACHE STRING "Folders searched for glm, CLI11, nlohmann-json, stb and tinygltf's headers")
+set(t10_web_include ${PROJECT_BINARY_DIR}/host-include)
+file(MAKE_DIRECTORY ${t10_web_include})
+function(t10_web_host_header variable probe link_name)
+    find_path(${variable} ${probe} PATHS ${T10_WEB_HOST_PREFIXES} PATH_SUFFIXES stb NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+    if(NOT ${variable})
+        message(FATAL_ERROR "web build: ${probe} not found in ${T10_WEB_HOST_PREFIXES} (Debian: libglm-dev "
+                            "libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev; set T10_WEB_HOST_PREFIXES)")
+    endif()
+    if(NOT EXISTS ${t10_web_include}/${link_name})
+        file(CREATE_LINK ${${variable}}/${link_name} ${t10_web_include}/${link_name} SYMBOLIC COPY_ON_ERROR)
+    endif()
+endfunction()
+t10_web_host_header(T10_WEB_GLM_DIR glm/glm.hpp glm)
+t10_web_host_header(T10_WEB_CLI11_DIR CLI/CLI.hpp CLI)
+t10_web_host_header(T10_WEB_JSON_DIR nlohmann/json.hpp nlohmann)
+t10_web_host_header(T10_WEB_TINYGLTF_DIR tiny_gltf.h tiny_gltf.h)
+foreach(header stb_image.h stb_image_write.h)
+    t10_web_host_header(T10_WEB_STB_DIR_${header} ${header} ${header})
+endforeach()
+
+add_library(t10_web_headers INTERFACE)
+target_include_directories(t10_web_headers SYSTEM INTERFACE ${t10_web_include})
+foreach(name glm::glm CLI11::CLI11 nlohmann_json::nlohmann_json)
+    add_library(${name} ALIAS t10_web_headers)
+endforeach()
+set(T10_STB_INCLUDE_DIR ${t10_web_include} CACHE PATH "" FORCE)
+set(T10_TINYGLTF_INCLUDE_DIR ${t10_web_include} CACHE PATH "" FORCE)
+include(cmake/T10HeaderOnly.cmake)
+
+# GLFW: emscripten's; GL: the ES 3.0 header standing in for glad's desktop loader.
+add_library(glfw INTERFACE)
+target_link_options(glfw INTERFACE -sUSE_GLFW=3)
+add_library(glad INTERFACE)
+target_include_directories(glad SYSTEM INTERFACE ${PROJECT_SOURCE_DIR}/common/platform/web/include)
+target_link_options(glad INTERFACE -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2)
+
+# Where the stages' files lie in the page's virtual file system (--preload-file), the same paths
+# T10_COMMON_SHADER_DIR, T10_ASSET_DIR and T10_STAGE_SHADER_DIR name in the desktop build.
+set(T10_WEB_ROOT /t10)
+set(T10_COMMON_SHADER_DIR_VALUE ${T10_WEB_ROOT}/common/shaders)
+set(T10_ASSET_DIR_VALUE ${T10_WEB_ROOT}/common/assets)
+
+# t10_web_stage(<target> <shader folder>): links a stage for the browser into
+# T10_WEB_OUTPUT_DIR/<target>/ with its page and its files (its shaders, common/shaders, the scene).
+function(t10_web_stage target folder)
+    set(out ${T10_WEB_OUTPUT_DIR}/${target})
+    set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${out} SUFFIX .js)
+    target_link_options(${target} PRIVATE
+        -sALLOW_MEMORY_GROWTH=1
+        "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','cwrap','UTF8ToString']"
+        "SHELL:--exclude-file *.cpp --exclude-file *.md --exclude-file *.txt"
+        "SHELL:--preload-file ${folder}@${T10_WEB_ROOT}/${target}"
+        "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/shaders@${T10_COMMON_SHADER_DIR_VALUE}"
+        "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/assets@${T10_ASSET_DIR_VALUE}")
+    # Relinked when a packaged file changes. A glob, where the project lists files: what is packaged is
+    # whole folders (a student's folder too), and the list only decides when to relink.
+    file(GLOB_RECURSE packaged CONFIGURE_DEPENDS ${folder}/*.vert ${folder}/*.frag ${PROJECT_SOURCE_DIR}/common/shaders/*
+         ${PROJECT_SOURCE_DIR}/common/assets/*)
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged})
+    set(T10_WEB_STAGE ${target})
+    configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${out}/index.html @ONLY)
+endfunction()

@@ -1,0 +1,305 @@
+// The browser build's GL layer: the desktop GL calls common/ and the stages make that WebGL 2 lacks,
+// emulated where WebGL 2 can answer them and refused with a message naming the call where it cannot;
+// and the explicit uniform locations of the shaders, which GLSL ES 3.00 cannot declare, mapped to the
+// locations WebGL assigns (see common/platform/web/include/glad/gl.h and gl_web.hpp).
+#define T10_WEB_GL_IMPLEMENTATION
+#include "t10/gl_web.hpp"
+
+#include "t10/error.hpp"
+#include "t10/gl.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace {
+
+// Locations handed out by glGetUniformLocation for uniforms without an explicit location: far above
+// any explicit one (GL_MAX_UNIFORM_LOCATIONS is 1024 at least and the shaders use < 64).
+constexpr GLint kLookedUpBase = 1 << 20;
+
+struct ProgramMap {
+    std::unordered_map<GLint, GLint> locations;           // our location -> WebGL's
+    std::unordered_map<std::string, GLint> explicitNames; // uniform (array) name -> its explicit location
+    std::unordered_map<std::string, GLint> lookedUp;      // name -> the location we handed out
+    std::vector<t10::web::SubroutineUniform> subroutines;
+    std::vector<GLint> subroutineLocations;               // WebGL's location of each subroutine's int
+    GLint next = kLookedUpBase;
+};
+
+struct TextureInfo {
+    GLenum format = 0;
+    int width = 0;
+    int height = 0;
+    int levels = 0;
+};
+
+std::unordered_map<GLuint, ProgramMap>& programs() {
+    static std::unordered_map<GLuint, ProgramMap> map;
+    return map;
+}
+std::unordered_map<GLuint, TextureInfo>& textures() {
+    static std::unordered_map<GLuint, TextureInfo> map;
+    return map;
+}
+GLuint g_current = 0;
+bool g_norm16 = false;
+
+[[noreturn]] void unavailable(const std::string& call, const std::string& why) {
+    throw t10::Error(call + " is not available in the web build (WebGL 2 has no " + why + ")");
+}
+
+// "name[3]" -> ("name", 3); "name" -> ("name", 0).
+std::pair<std::string, int> splitIndex(const std::string& name) {
+    const std::size_t open = name.rfind('[');
+    if (open == std::string::npos || name.back() != ']') return {name, 0};
+    const std::string digits = name.substr(open + 1, name.size() - open - 2);
+    if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return {name, 0};
+    return {name.substr(0, open), std::stoi(digits)};
+}
+
+GLint webLocation(GLuint program, GLint location) {
+    if (location < 0) return -1;
+    const auto p = programs().find(program);
+    if (p == programs().end()) return location; // not made by ShaderManager: WebGL's own locations
+    const auto it = p->second.locations.find(location);
+    return it == p->second.locations.end() ? -1 : it->second;
+}
+
+GLint current(GLint location) { return webLocation(g_current, location); }
+
+GLuint boundTexture2D() {
+    GLint texture = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    return static_cast<GLuint>(texture);
+}
+
+void recordExplicitLocations(GLuint program, ProgramMap& map, const std::vector<t10::web::NamedValue>& explicitLocations) {
+    for (const auto& entry : explicitLocations) map.explicitNames[entry.name] = entry.value;
+    GLint count = 0;
+    glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        char name[256];
+        GLsizei length = 0;
+        GLint size = 0;
+        GLenum type = 0;
+        glGetActiveUniform(program, static_cast<GLuint>(i), sizeof name, &length, &size, &type, name);
+        const auto [base, index] = splitIndex(std::string(name, static_cast<std::size_t>(length)));
+        const auto found = map.explicitNames.find(base);
+        if (found == map.explicitNames.end() || index != 0) continue;
+        for (GLint k = 0; k < size; ++k) {
+            const std::string element = size > 1 ? base + "[" + std::to_string(k) + "]" : base;
+            const GLint location = glGetUniformLocation(program, element.c_str());
+            if (location >= 0) map.locations[found->second + k] = location;
+        }
+    }
+}
+
+} // namespace
+
+namespace t10::web {
+
+void configureProgram(unsigned program, const ProgramLayout& layout) {
+    ProgramMap map;
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(program);
+    for (const NamedValue& sampler : layout.samplerUnits) {
+        const GLint location = glGetUniformLocation(program, sampler.name.c_str());
+        if (location >= 0) glUniform1i(location, sampler.value);
+    }
+    for (const NamedValue& block : layout.blockBindings) {
+        const GLuint index = glGetUniformBlockIndex(program, block.name.c_str());
+        if (index != GL_INVALID_INDEX) glUniformBlockBinding(program, index, static_cast<GLuint>(block.value));
+    }
+    recordExplicitLocations(program, map, layout.uniformLocations);
+    for (const SubroutineUniform& subroutine : layout.subroutineUniforms) {
+        map.subroutines.push_back(subroutine);
+        map.subroutineLocations.push_back(glGetUniformLocation(program, subroutine.uniformName.c_str()));
+    }
+    glUseProgram(static_cast<GLuint>(previous));
+    programs()[program] = std::move(map);
+}
+
+void setTextureNorm16(bool available) { g_norm16 = available; }
+bool textureNorm16() { return g_norm16; }
+
+} // namespace t10::web
+
+extern "C" {
+
+void t10WebUseProgram(GLuint program) {
+    g_current = program;
+    glUseProgram(program);
+}
+
+void t10WebDeleteProgram(GLuint program) {
+    programs().erase(program);
+    if (g_current == program) g_current = 0;
+    glDeleteProgram(program);
+}
+
+GLint t10WebGetUniformLocation(GLuint program, const GLchar* name) {
+    const auto p = programs().find(program);
+    if (p == programs().end()) return glGetUniformLocation(program, name);
+    ProgramMap& map = p->second;
+    const auto [base, index] = splitIndex(name);
+    if (const auto found = map.explicitNames.find(base); found != map.explicitNames.end())
+        return map.locations.count(found->second + index) != 0 ? found->second + index : -1;
+    if (const auto known = map.lookedUp.find(name); known != map.lookedUp.end()) return known->second;
+    const GLint location = glGetUniformLocation(program, name);
+    if (location < 0) return -1;
+    const GLint ours = map.next++;
+    map.locations[ours] = location;
+    map.lookedUp[name] = ours;
+    return ours;
+}
+
+void t10WebGetUniformfv(GLuint program, GLint location, GLfloat* params) {
+    glGetUniformfv(program, webLocation(program, location), params);
+}
+void t10WebGetUniformiv(GLuint program, GLint location, GLint* params) {
+    glGetUniformiv(program, webLocation(program, location), params);
+}
+
+void t10WebUniform1f(GLint l, GLfloat a) { glUniform1f(current(l), a); }
+void t10WebUniform2f(GLint l, GLfloat a, GLfloat b) { glUniform2f(current(l), a, b); }
+void t10WebUniform3f(GLint l, GLfloat a, GLfloat b, GLfloat c) { glUniform3f(current(l), a, b, c); }
+void t10WebUniform4f(GLint l, GLfloat a, GLfloat b, GLfloat c, GLfloat d) { glUniform4f(current(l), a, b, c, d); }
+void t10WebUniform1i(GLint l, GLint a) { glUniform1i(current(l), a); }
+void t10WebUniform2i(GLint l, GLint a, GLint b) { glUniform2i(current(l), a, b); }
+void t10WebUniform3i(GLint l, GLint a, GLint b, GLint c) { glUniform3i(current(l), a, b, c); }
+void t10WebUniform4i(GLint l, GLint a, GLint b, GLint c, GLint d) { glUniform4i(current(l), a, b, c, d); }
+void t10WebUniform1ui(GLint l, GLuint a) { glUniform1ui(current(l), a); }
+void t10WebUniform1fv(GLint l, GLsizei n, const GLfloat* v) { glUniform1fv(current(l), n, v); }
+void t10WebUniform2fv(GLint l, GLsizei n, const GLfloat* v) { glUniform2fv(current(l), n, v); }
+void t10WebUniform3fv(GLint l, GLsizei n, const GLfloat* v) { glUniform3fv(current(l), n, v); }
+void t10WebUniform4fv(GLint l, GLsizei n, const GLfloat* v) { glUniform4fv(current(l), n, v); }
+void t10WebUniform1iv(GLint l, GLsizei n, const GLint* v) { glUniform1iv(current(l), n, v); }
+void t10WebUniform2iv(GLint l, GLsizei n, const GLint* v) { glUniform2iv(current(l), n, v); }
+void t10WebUniformMatrix3fv(GLint l, GLsizei n, GLboolean t, const GLfloat* v) { glUniformMatrix3fv(current(l), n, t, v); }
+void t10WebUniformMatrix4fv(GLint l, GLsizei n, GLboolean t, const GLfloat* v) { glUniformMatrix4fv(current(l), n, t, v); }
+
+// Desktop GL 4.1's glProgramUniform*: WebGL 2 has none, so the program is made current for the call.
+void glProgramUniform1f(GLuint program, GLint location, GLfloat v0) {
+    const GLuint previous = g_current;
+    t10WebUseProgram(program);
+    t10WebUniform1f(location, v0);
+    t10WebUseProgram(previous);
+}
+void glProgramUniform1i(GLuint program, GLint location, GLint v0) {
+    const GLuint previous = g_current;
+    t10WebUseProgram(program);
+    t10WebUniform1i(location, v0);
+    t10WebUseProgram(previous);
+}
+
+// The subroutine uniform at location i of the current program is the int uniform its translation
+// declared; it takes the chosen subroutine's layout(index).
+void glUniformSubroutinesuiv(GLenum shadertype, GLsizei count, const GLuint* indices) {
+    const auto p = programs().find(g_current);
+    if (p == programs().end()) throw t10::Error("glUniformSubroutinesuiv: no program made by ShaderManager is current");
+    const ProgramMap& map = p->second;
+    for (std::size_t i = 0; i < map.subroutines.size(); ++i) {
+        const auto& subroutine = map.subroutines[i];
+        if (subroutine.shaderStage != shadertype || subroutine.location < 0 || subroutine.location >= count) continue;
+        glUniform1i(map.subroutineLocations[i], static_cast<GLint>(indices[subroutine.location]));
+    }
+}
+
+void t10WebTexStorage2D(GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height) {
+    if (internalformat == GL_R16 && !g_norm16) {
+        throw t10::Error("GL_R16 textures (the tutorial's luminance texture) need WebGL 2's EXT_texture_norm16, "
+                         "which this browser does not offer; the extras page can use GL_R16F instead "
+                         "(luminance-format=r16f)");
+    }
+    glTexStorage2D(target, levels, internalformat, width, height);
+    if (target == GL_TEXTURE_2D) textures()[boundTexture2D()] = TextureInfo{internalformat, width, height, levels};
+}
+
+void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border,
+                      GLenum format, GLenum type, const void* pixels) {
+    if (internalformat == GL_R16 && !g_norm16) t10WebTexStorage2D(target, 1, GL_R16, width, height);
+    glTexImage2D(target, level, internalformat, width, height, border, format, type, pixels);
+    if (target != GL_TEXTURE_2D) return;
+    TextureInfo& info = textures()[boundTexture2D()];
+    if (level == 0) info = TextureInfo{static_cast<GLenum>(internalformat), width, height, 1};
+    info.levels = std::max(info.levels, level + 1);
+}
+
+void t10WebDeleteTextures(GLsizei n, const GLuint* names) {
+    for (GLsizei i = 0; i < n; ++i) textures().erase(names[i]);
+    glDeleteTextures(n, names);
+}
+
+void glGetTexLevelParameteriv(GLenum target, GLint level, GLenum pname, GLint* params) {
+    if (target != GL_TEXTURE_2D) unavailable("glGetTexLevelParameteriv on a target other than GL_TEXTURE_2D", "such query");
+    const auto it = textures().find(boundTexture2D());
+    const bool defined = it != textures().end() && level >= 0 && level < it->second.levels;
+    switch (pname) {
+    case GL_TEXTURE_WIDTH: *params = defined ? std::max(1, it->second.width >> level) : 0; return;
+    case GL_TEXTURE_HEIGHT: *params = defined ? std::max(1, it->second.height >> level) : 0; return;
+    case GL_TEXTURE_INTERNAL_FORMAT: *params = defined ? static_cast<GLint>(it->second.format) : GL_RGBA; return;
+    default: unavailable("glGetTexLevelParameteriv(" + std::to_string(pname) + ")", "texture level queries");
+    }
+}
+
+// glGetTexImage into memory, through a framebuffer and glReadPixels: float formats as RGBA floats,
+// GL_R16 as RGBA unsigned shorts (EXT_texture_norm16), 8-bit formats as RGBA bytes.
+void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+    GLint pack = 0;
+    glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pack);
+    if (target != GL_TEXTURE_2D || type != GL_FLOAT || pack != 0)
+        unavailable("glGetTexImage (other than GL_TEXTURE_2D as floats into memory)", "glGetTexImage");
+    const GLuint texture = boundTexture2D();
+    const auto it = textures().find(texture);
+    if (it == textures().end() || level >= it->second.levels) throw t10::Error("glGetTexImage: the texture level is undefined");
+    const int width = std::max(1, it->second.width >> level);
+    const int height = std::max(1, it->second.height >> level);
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    GLint previousRead = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &previousRead);
+    GLuint fbo = 0;
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, level);
+    std::vector<float> rgba(count * 4);
+    const GLenum internal = it->second.format;
+    if (internal == GL_R16) {
+        std::vector<std::uint16_t> raw(count * 4);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_SHORT, raw.data());
+        for (std::size_t i = 0; i < raw.size(); ++i) rgba[i] = static_cast<float>(raw[i]) / 65535.0f;
+    } else if (internal == GL_RGBA8 || internal == GL_SRGB8_ALPHA8 || internal == GL_RGB8 || internal == GL_R8) {
+        std::vector<std::uint8_t> raw(count * 4);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
+        for (std::size_t i = 0; i < raw.size(); ++i) rgba[i] = static_cast<float>(raw[i]) / 255.0f;
+    } else {
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(previousRead));
+    glDeleteFramebuffers(1, &fbo);
+    const int channels = format == GL_RED ? 1 : (format == GL_RGB ? 3 : 4);
+    auto* out = static_cast<float*>(pixels);
+    for (std::size_t i = 0; i < count; ++i)
+        for (int c = 0; c < channels; ++c) out[i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)] = rgba[i * 4 + static_cast<std::size_t>(c)];
+}
+
+void glTextureView(GLuint, GLenum, GLuint, GLenum, GLuint, GLuint, GLuint, GLuint) {
+    unavailable("glTextureView (the views of --view)", "texture views");
+}
+void glDebugMessageCallback(GLDEBUGPROC, const void*) {} // no debug output in WebGL 2: nothing to remove
+void glDispatchCompute(GLuint, GLuint, GLuint) { unavailable("glDispatchCompute (--key exact)", "compute shaders"); }
+void glMemoryBarrier(GLbitfield) { unavailable("glMemoryBarrier (--key exact)", "compute shaders"); }
+void glGetQueryObjectiv(GLuint, GLenum, GLint*) { unavailable("GPU timer queries (--bench)", "GL_TIME_ELAPSED queries"); }
+void glGetQueryObjectui64v(GLuint, GLenum, GLuint64*) { unavailable("GPU timer queries (--bench)", "GL_TIME_ELAPSED queries"); }
+void glQueryCounter(GLuint, GLenum) { unavailable("GPU timer queries (--bench)", "GL_TIMESTAMP queries"); }
+void glGetProgramStageiv(GLuint, GLenum, GLenum, GLint*) { unavailable("glGetProgramStageiv (--capture-passes)", "subroutines"); }
+void glGetUniformSubroutineuiv(GLenum, GLint, GLuint*) { unavailable("glGetUniformSubroutineuiv (--capture-passes)", "subroutines"); }
+void glGetActiveSubroutineName(GLuint, GLenum, GLuint, GLsizei, GLsizei*, GLchar*) {
+    unavailable("glGetActiveSubroutineName (--capture-passes)", "subroutines");
+}
+
+} // extern "C"
