@@ -36,8 +36,10 @@ help:
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
 	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
-	@echo "make clean  remove $(BUILD)/, build-release/ and $(OUT)/"
+	@echo "make clean  remove $(BUILD)/, build-release/, build-web/ and $(OUT)/"
 	@echo "make views  render every view (--view) of every stage into $(OUT)/views/, with each view's line in views.txt"
+	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one)"
+	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
@@ -133,7 +135,7 @@ bless: build
 	tests/golden/bless.sh $(BIN) $(if $(filter command line,$(origin STAGES)),$(STAGES),$(shell cat $(BUILD)/golden_stages.txt))
 
 clean:
-	rm -rf $(BUILD) build-release $(OUT)
+	rm -rf $(BUILD) build-release build-web $(OUT)
 
 # Exercise 39 measured: post-process GPU time and halo radius for 0-10 blur passes at 1280x720
 # (extras/), timed in a release build (build-release/, the CMake preset of that name): debug code
@@ -145,6 +147,33 @@ bench-passes: deps
 	@[ -f build-release/build.ninja ] || cmake --preset release -DT10_BUILD_TESTS=$(TESTS_ON)
 	cmake --build build-release -j $(JOBS) --target extras make_test_images halo_radius
 	tools/bench_passes/bench_passes.sh build-release/bin $(OUT) 10 5 1280x720 3
+
+# The browser build (issue 36): every stage, or STAGE=name (a student's folder too: student_partN),
+# compiled by Debian's emscripten to WebAssembly + WebGL 2 into $(OUT)/web/<stage>/ (index.html and its
+# .js, .wasm and .data), in build-web/ (the CMake preset `web`; cmake/T10Web.cmake). make web-serve
+# serves $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (loopback only). NODE_PATH: Debian's emscripten
+# runs its JavaScript tools with the system's Node, which finds their modules (acorn) only there.
+WEB_BUILD := build-web
+WEB_PORT  ?= 8000
+WEB_ENV   := NODE_PATH=/usr/share/nodejs
+.PHONY: web web-serve
+web: PACKAGES += emscripten
+web: deps
+	@[ -f $(WEB_BUILD)/build.ninja ] || $(WEB_ENV) emcmake cmake --preset web -DT10_WEB_OUTPUT_DIR=$(CURDIR)/$(OUT)/web
+	@start=$$(date +%s); \
+	$(WEB_ENV) cmake --build $(WEB_BUILD) -j $(JOBS) $(if $(STAGE),--target $(STAGE)) || exit 1; \
+	echo "make web: built in $$(( $$(date +%s) - start )) s; each page's download (gzip as a server may send it):"; \
+	for stage in $(or $(STAGE),$$(cat $(WEB_BUILD)/stages.txt)); do \
+	    dir=$(OUT)/web/$$stage; \
+	    files="$$dir/index.html $$dir/$$stage.js $$dir/$$stage.wasm $$dir/$$stage.data"; \
+	    bytes=$$(cat $$files | wc -c); gz=$$(cat $$files | gzip -6 | wc -c); \
+	    printf '  %-28s %5d KiB (gzip %5d KiB)  %s/index.html\n' $$stage $$((bytes / 1024)) $$((gz / 1024)) $$dir; \
+	done
+
+web-serve:
+	@[ -d $(OUT)/web ] || { echo "make web-serve: $(OUT)/web/ does not exist: run make web first"; exit 2; }
+	@echo "Serving $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (e.g. /tutorial10_part3_gaussian/; Ctrl-C stops)"
+	@exec python3 tools/web/web_page.py --serve $(OUT)/web --port $(WEB_PORT)
 
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).

@@ -48,6 +48,23 @@ foreach(header stb_image.h stb_image_write.h)
     t10_web_host_header(T10_WEB_STB_DIR_${header} ${header} ${header})
 endforeach()
 
+# Dear ImGui's headers, for extras' panel code, which the browser build compiles but never calls
+# (common/CMakeLists.txt, t10_panel).
+add_library(t10_web_imgui_headers INTERFACE)
+find_path(T10_WEB_IMGUI_DIR imgui.h PATHS ${T10_WEB_HOST_PREFIXES} PATH_SUFFIXES imgui NO_DEFAULT_PATH NO_CMAKE_FIND_ROOT_PATH)
+if(T10_WEB_IMGUI_DIR)
+    foreach(header imgui.h imconfig.h)
+        if(NOT EXISTS ${t10_web_include}/imgui/${header})
+            file(MAKE_DIRECTORY ${t10_web_include}/imgui)
+            file(CREATE_LINK ${T10_WEB_IMGUI_DIR}/${header} ${t10_web_include}/imgui/${header} SYMBOLIC COPY_ON_ERROR)
+        endif()
+    endforeach()
+    target_include_directories(t10_web_imgui_headers SYSTEM INTERFACE ${t10_web_include}/imgui)
+elseif(T10_BUILD_EXTRAS)
+    message(FATAL_ERROR "web build: Dear ImGui's imgui.h not found in ${T10_WEB_HOST_PREFIXES} (Debian: libimgui-dev), "
+                        "which extras/ includes; or configure with -DT10_BUILD_EXTRAS=OFF")
+endif()
+
 add_library(t10_web_headers INTERFACE)
 target_include_directories(t10_web_headers SYSTEM INTERFACE ${t10_web_include})
 foreach(name glm::glm CLI11::CLI11 nlohmann_json::nlohmann_json)

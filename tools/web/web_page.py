@@ -219,14 +219,35 @@ def render_page(root, page, evals=(), png=None, timeout=120, chromium=None):
         shutil.rmtree(profile, ignore_errors=True)
 
 
+def serve_forever(root, port):
+    """make web-serve: the static server alone, until Ctrl-C."""
+    try:
+        server = serve(root, port)
+    except OSError as error:
+        print(f"127.0.0.1:{port}: {error.strerror} (WEB_PORT=N picks another port)", file=sys.stderr)
+        return 1
+    try:
+        while True:
+            time.sleep(3600)
+    except KeyboardInterrupt:
+        server.shutdown()
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--root", required=True, help="the folder to serve (out/web)")
-    parser.add_argument("--page", required=True, help="the page under --root, with its query")
+    parser.add_argument("--serve", metavar="DIR", help="only serve DIR on 127.0.0.1:--port until Ctrl-C (make web-serve)")
+    parser.add_argument("--port", type=int, default=8000, help="--serve's port (default 8000)")
+    parser.add_argument("--root", help="the folder to serve (out/web)")
+    parser.add_argument("--page", help="the page under --root, with its query")
     parser.add_argument("--eval", action="append", default=[], help="a JavaScript expression to run once rendered")
     parser.add_argument("--png", help="write the canvas here once rendered")
     parser.add_argument("--timeout", type=float, default=120, help="seconds to wait for each state (default 120)")
     args = parser.parse_args()
+    if args.serve:
+        return serve_forever(args.serve, args.port)
+    if not args.root or not args.page:
+        parser.error("--root and --page are needed (or --serve DIR)")
     if not os.path.isdir(args.root):
         print(f"{args.root}: no such folder (run make web)", file=sys.stderr)
         return 2

@@ -4,6 +4,7 @@
 #include "t10/error.hpp"
 
 #include <string>
+#include <utility>
 
 namespace t10 {
 
@@ -67,6 +68,14 @@ ImageF readTextureLevel(GLuint texture, int level, bool rgba) {
 
 void TexelReadback::request(GLuint texture, int level) {
     const TextureOnUnit0 bound(texture);
+#ifdef __EMSCRIPTEN__
+    // No pixel-pack copy of a texture level in WebGL 2: the platform reads it through a framebuffer,
+    // which waits for the GPU (one texel, once a frame).
+    float value = 0.0f;
+    glGetTexImage(GL_TEXTURE_2D, level, GL_RED, GL_FLOAT, &value);
+    read_ = value;
+    return;
+#endif
     // Only a 1x1 level fits the one-float buffer (the last level of a full mip chain).
     GLint width = 0;
     GLint height = 0;
@@ -98,6 +107,9 @@ void TexelReadback::request(GLuint texture, int level) {
 }
 
 std::optional<float> TexelReadback::poll() {
+#ifdef __EMSCRIPTEN__
+    return std::exchange(read_, std::nullopt);
+#endif
     std::optional<float> newest;
     long newestSerial = 0;
     for (Slot& slot : slots_) {

@@ -10,9 +10,14 @@
 #include "t10/gl_web.hpp"
 
 #include <GLFW/glfw3.h>
+#include <emscripten.h>
 #include <emscripten/html5.h>
 
+#include <iostream>
 #include <string>
+
+// The page says so too: document.body.dataset.t10R16 = "emulated".
+EM_JS(void, markR16Emulated, (), { document.body.dataset.t10R16 = "emulated"; });
 
 namespace t10 {
 
@@ -36,8 +41,16 @@ public:
         if (!emscripten_webgl_enable_extension(context, "EXT_color_buffer_float"))
             throw Error("this browser's WebGL 2 has no EXT_color_buffer_float: the stages render into "
                         "floating-point targets (GL_RGBA16F), which it cannot");
-        // GL_R16, the tutorial's luminance texture: refused when used (gl_web.cpp) if missing.
-        web::setTextureNorm16(emscripten_webgl_enable_extension(context, "EXT_texture_norm16") == EM_TRUE);
+        // GL_R16, the tutorial's luminance texture: EXT_texture_norm16, else emulated with GL_R32F,
+        // which needs OES_texture_float_linear to be filtered (gl_web.cpp); else refused when used.
+        const bool norm16 = emscripten_webgl_enable_extension(context, "EXT_texture_norm16") == EM_TRUE;
+        const bool floatLinear = emscripten_webgl_enable_extension(context, "OES_texture_float_linear") == EM_TRUE;
+        web::setTextureNorm16(norm16, floatLinear);
+        if (!norm16 && floatLinear) {
+            std::cout << "note: this browser's WebGL 2 has no EXT_texture_norm16: GL_R16 is emulated (GL_R32F, "
+                         "clamped to [0, 1] and rounded to 16 bits before its mipmaps are made)\n";
+            markR16Emulated();
+        }
     }
     ~WebContext() override {
         glfwDestroyWindow(window_);

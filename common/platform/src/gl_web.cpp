@@ -9,6 +9,7 @@
 #include "t10/gl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -30,10 +31,11 @@ struct ProgramMap {
 };
 
 struct TextureInfo {
-    GLenum format = 0;
+    GLenum format = 0; // as the caller asked (GL_R16 also when emulated)
     int width = 0;
     int height = 0;
     int levels = 0;
+    bool emulatedR16 = false; // GL_R16 stored as GL_R32F (see emulateR16Write)
 };
 
 std::unordered_map<GLuint, ProgramMap>& programs() {
@@ -46,6 +48,7 @@ std::unordered_map<GLuint, TextureInfo>& textures() {
 }
 GLuint g_current = 0;
 bool g_norm16 = false;
+bool g_r16Emulation = false;
 
 [[noreturn]] void unavailable(const std::string& call, const std::string& why) {
     throw t10::Error(call + " is not available in the web build (WebGL 2 has no " + why + ")");
@@ -98,6 +101,113 @@ void recordExplicitLocations(GLuint program, ProgramMap& map, const std::vector<
     }
 }
 
+// GL_R16 where the browser lacks EXT_texture_norm16 (Chromium on SwiftShader, for one): stored as
+// GL_R32F, and what a GL_R16 texture would hold is made before every glGenerateMipmap of it (the
+// stages' luminance texture gets its mipmaps right after its pass): level 0 clamped to [0, 1] and
+// rounded to a multiple of 1/65535, as writing to a 16-bit normalised target does (NaN becomes 0).
+// The mipmaps are then averaged in float rather than in 16 bits: within 1/65535 of GL_R16's.
+constexpr const char* kR16Vertex = R"(#version 300 es
+void main() {
+    gl_Position = vec4(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0, 0.0, 1.0);
+})";
+constexpr const char* kR16Fragment = R"(#version 300 es
+precision highp float;
+uniform highp sampler2D s2Level0;
+out vec4 v4Out;
+void main() {
+    float v = texelFetch(s2Level0, ivec2(gl_FragCoord.xy), 0).r;
+    v = v >= 0.0 ? min(v, 1.0) : 0.0;
+    v4Out = vec4(floor(v * 65535.0 + 0.5) / 65535.0, 0.0, 0.0, 1.0);
+})";
+
+GLuint compileR16Program() {
+    const GLuint program = glCreateProgram();
+    for (const auto& [type, text] : {std::pair<GLenum, const char*>{GL_VERTEX_SHADER, kR16Vertex},
+                                     std::pair<GLenum, const char*>{GL_FRAGMENT_SHADER, kR16Fragment}}) {
+        const GLuint shader = glCreateShader(type);
+        glShaderSource(shader, 1, &text, nullptr);
+        glCompileShader(shader);
+        glAttachShader(program, shader);
+        glDeleteShader(shader);
+    }
+    glLinkProgram(program);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (linked != GL_TRUE) throw t10::Error("the GL_R16 emulation's program did not link");
+    return program;
+}
+
+// Every piece of state the pass below changes, put back afterwards.
+class SavedState {
+public:
+    SavedState() {
+        glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw_);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read_);
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vao_);
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &active_);
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture_);
+        for (std::size_t i = 0; i < kCaps.size(); ++i) enabled_[i] = glIsEnabled(kCaps[i]);
+    }
+    ~SavedState() {
+        glUseProgram(static_cast<GLuint>(program_));
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_));
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+        glBindVertexArray(static_cast<GLuint>(vao_));
+        glActiveTexture(static_cast<GLenum>(active_));
+        glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture_));
+        for (std::size_t i = 0; i < kCaps.size(); ++i) (enabled_[i] ? glEnable : glDisable)(kCaps[i]);
+    }
+    SavedState(const SavedState&) = delete;
+    SavedState& operator=(const SavedState&) = delete;
+
+private:
+    static constexpr std::array<GLenum, 5> kCaps{GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CULL_FACE, GL_STENCIL_TEST};
+    GLint program_ = 0, draw_ = 0, read_ = 0, vao_ = 0, active_ = 0, texture_ = 0;
+    GLint viewport_[4] = {};
+    std::array<GLboolean, 5> enabled_{};
+};
+
+void emulateR16Write(GLuint texture, const TextureInfo& info) {
+    static GLuint program = 0, vao = 0, fbos[2] = {}, scratch = 0;
+    static int scratchWidth = 0, scratchHeight = 0;
+    if (program == 0) {
+        program = compileR16Program();
+        glGenVertexArrays(1, &vao);
+        glGenFramebuffers(2, fbos);
+    }
+    const SavedState saved;
+    // The texture stays bound on the caller's unit; the scratch texture and the pass use unit 0's
+    // binding only while the pass runs (restored by SavedState on the caller's active unit).
+    glActiveTexture(GL_TEXTURE0);
+    const SavedState unit0; // unit 0's binding and everything else, put back first
+    if (scratch == 0 || scratchWidth != info.width || scratchHeight != info.height) {
+        if (scratch != 0) glDeleteTextures(1, &scratch);
+        glGenTextures(1, &scratch);
+        glBindTexture(GL_TEXTURE_2D, scratch);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_R32F, info.width, info.height);
+        scratchWidth = info.width;
+        scratchHeight = info.height;
+    }
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbos[0]);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scratch, 0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    for (GLenum cap : {GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CULL_FACE, GL_STENCIL_TEST}) glDisable(cap);
+    glViewport(0, 0, info.width, info.height);
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "s2Level0"), 0);
+    glBindVertexArray(vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    // The clamped copy back into level 0.
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbos[0]);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbos[1]);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    glBlitFramebuffer(0, 0, info.width, info.height, 0, 0, info.width, info.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+}
+
 } // namespace
 
 namespace t10::web {
@@ -124,7 +234,10 @@ void configureProgram(unsigned program, const ProgramLayout& layout) {
     programs()[program] = std::move(map);
 }
 
-void setTextureNorm16(bool available) { g_norm16 = available; }
+void setTextureNorm16(bool available, bool emulation) {
+    g_norm16 = available;
+    g_r16Emulation = emulation;
+}
 bool textureNorm16() { return g_norm16; }
 
 } // namespace t10::web
@@ -211,18 +324,29 @@ void glUniformSubroutinesuiv(GLenum shadertype, GLsizei count, const GLuint* ind
 }
 
 void t10WebTexStorage2D(GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height) {
-    if (internalformat == GL_R16 && !g_norm16) {
-        throw t10::Error("GL_R16 textures (the tutorial's luminance texture) need WebGL 2's EXT_texture_norm16, "
-                         "which this browser does not offer; the extras page can use GL_R16F instead "
-                         "(luminance-format=r16f)");
+    const bool emulate = internalformat == GL_R16 && !g_norm16;
+    if (emulate && !g_r16Emulation) {
+        throw t10::Error("GL_R16 textures (the tutorial's luminance texture) need WebGL 2's EXT_texture_norm16 or, to "
+                         "emulate it, OES_texture_float_linear; this browser offers neither. The extras page can "
+                         "use GL_R16F instead (luminance-format=r16f)");
     }
-    glTexStorage2D(target, levels, internalformat, width, height);
-    if (target == GL_TEXTURE_2D) textures()[boundTexture2D()] = TextureInfo{internalformat, width, height, levels};
+    glTexStorage2D(target, levels, emulate ? GL_R32F : internalformat, width, height);
+    if (target == GL_TEXTURE_2D) textures()[boundTexture2D()] = TextureInfo{internalformat, width, height, levels, emulate};
+}
+
+void t10WebGenerateMipmap(GLenum target) {
+    if (target == GL_TEXTURE_2D) {
+        const GLuint texture = boundTexture2D();
+        const auto it = textures().find(texture);
+        if (it != textures().end() && it->second.emulatedR16) emulateR16Write(texture, it->second);
+    }
+    glGenerateMipmap(target);
 }
 
 void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border,
                       GLenum format, GLenum type, const void* pixels) {
-    if (internalformat == GL_R16 && !g_norm16) t10WebTexStorage2D(target, 1, GL_R16, width, height);
+    if (internalformat == GL_R16 && !g_norm16)
+        unavailable("glTexImage2D with GL_R16 (use glTexStorage2D, as the stages do)", "EXT_texture_norm16 here");
     glTexImage2D(target, level, internalformat, width, height, border, format, type, pixels);
     if (target != GL_TEXTURE_2D) return;
     TextureInfo& info = textures()[boundTexture2D()];
@@ -268,7 +392,7 @@ void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, void*
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, level);
     std::vector<float> rgba(count * 4);
     const GLenum internal = it->second.format;
-    if (internal == GL_R16) {
+    if (internal == GL_R16 && !it->second.emulatedR16) {
         std::vector<std::uint16_t> raw(count * 4);
         glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_SHORT, raw.data());
         for (std::size_t i = 0; i < raw.size(); ++i) rgba[i] = static_cast<float>(raw[i]) / 65535.0f;

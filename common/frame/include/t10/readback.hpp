@@ -40,6 +40,9 @@ private:
     std::array<Slot, kSlots> slots_{};
     int next_ = 0;
     long serial_ = 0;
+#ifdef __EMSCRIPTEN__
+    std::optional<float> read_; // the browser build reads at once (WebGL 2 has no glGetTexImage)
+#endif
 };
 
 } // namespace t10

@@ -31,8 +31,9 @@ struct ProgramLayout {
 // every later glUniform*, glGetUniformLocation and glUniformSubroutinesuiv on it.
 void configureProgram(unsigned program, const ProgramLayout& layout);
 
-// Set by the web context once the WebGL 2 context exists.
-void setTextureNorm16(bool available);
+// Set by the web context once the WebGL 2 context exists: EXT_texture_norm16, and whether GL_R16 can
+// be emulated without it (GL_R32F, linearly filtered through OES_texture_float_linear; gl_web.cpp).
+void setTextureNorm16(bool available, bool emulation);
 bool textureNorm16();
 
 } // namespace t10::web

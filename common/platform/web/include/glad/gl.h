@@ -6,7 +6,8 @@
    - Uniform calls go through the platform (t10Web*), which maps the shaders' explicit locations
      (layout(location = N), which GLSL ES 3.00 lacks for uniforms) to the locations WebGL assigns, and
      sets Part 3's subroutine uniform (an int uniform in the translated shader).
-   - Texture storage is recorded, so that glGetTexLevelParameteriv and glGetTexImage can be answered. */
+   - Texture storage is recorded, so that glGetTexLevelParameteriv and glGetTexImage can be answered,
+     and GL_R16 emulated where EXT_texture_norm16 is missing (glGenerateMipmap; gl_web.cpp). */
 #ifndef T10_WEB_GL_H
 #define T10_WEB_GL_H
 
@@ -111,6 +112,7 @@ void t10WebTexStorage2D(GLenum target, GLsizei levels, GLenum internalformat, GL
 void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border,
                       GLenum format, GLenum type, const void* pixels);
 void t10WebDeleteTextures(GLsizei n, const GLuint* textures);
+void t10WebGenerateMipmap(GLenum target);
 
 #ifdef __cplusplus
 }
@@ -142,6 +144,7 @@ void t10WebDeleteTextures(GLsizei n, const GLuint* textures);
 #define glTexStorage2D t10WebTexStorage2D
 #define glTexImage2D t10WebTexImage2D
 #define glDeleteTextures t10WebDeleteTextures
+#define glGenerateMipmap t10WebGenerateMipmap
 #endif
 
 #endif
