@@ -354,6 +354,20 @@ void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei 
     info.levels = std::max(info.levels, level + 1);
 }
 
+// A uniform block's size is a multiple of 16 bytes in std140 (InvResolution's one vec2 is 16), and
+// WebGL refuses a draw whose bound uniform buffer is smaller than its block; desktop GL reads only
+// what the shader uses. The stages fill InvResolution with sizeof(vec2): padded here with zeros.
+void t10WebBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage) {
+    constexpr GLsizeiptr kBlockAlignment = 16;
+    if (target != GL_UNIFORM_BUFFER || size % kBlockAlignment == 0) {
+        glBufferData(target, size, data, usage);
+        return;
+    }
+    std::vector<std::uint8_t> padded(static_cast<std::size_t>((size / kBlockAlignment + 1) * kBlockAlignment), 0);
+    if (data != nullptr) std::copy_n(static_cast<const std::uint8_t*>(data), static_cast<std::size_t>(size), padded.begin());
+    glBufferData(target, static_cast<GLsizeiptr>(padded.size()), padded.data(), usage);
+}
+
 void t10WebDeleteTextures(GLsizei n, const GLuint* names) {
     for (GLsizei i = 0; i < n; ++i) textures().erase(names[i]);
     glDeleteTextures(n, names);

@@ -113,6 +113,8 @@ void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei 
                       GLenum format, GLenum type, const void* pixels);
 void t10WebDeleteTextures(GLsizei n, const GLuint* textures);
 void t10WebGenerateMipmap(GLenum target);
+/* Uniform buffers padded to 16 bytes (WebGL checks the buffer against the block's std140 size). */
+void t10WebBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage);
 
 #ifdef __cplusplus
 }
@@ -145,6 +147,7 @@ void t10WebGenerateMipmap(GLenum target);
 #define glTexImage2D t10WebTexImage2D
 #define glDeleteTextures t10WebDeleteTextures
 #define glGenerateMipmap t10WebGenerateMipmap
+#define glBufferData t10WebBufferData
 #endif
 
 #endif
