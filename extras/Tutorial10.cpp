@@ -569,7 +569,9 @@ void GL_AddOptions(CLI::App& cli)
                                                    "white")
         ->capture_default_str()
         ->check(t10::inRange(g_fWhitePointMin, g_fWhitePointMax));
-    cli.add_flag_callback("--no-bloom", [] { g_bBloom = false; }, "Step 37: turn the bloom off (the tone mapping alone)");
+    // A negated flag: --no-bloom turns the bloom off, --no-bloom=false back on (the web page's
+    // checkbox, which sets options one by one)
+    cli.add_flag("!--no-bloom", g_bBloom, "Step 37: turn the bloom off (the tone mapping alone)");
     // [step 38] Threshold and strength options
     cli.add_option("--bloom-threshold", g_fBloomThreshold, "Step 38: bloom where the luminance reaches this multiple "
                                                            "of Yw")

@@ -425,8 +425,47 @@ void glGetTexImage(GLenum target, GLint level, GLenum format, GLenum type, void*
         for (int c = 0; c < channels; ++c) out[i * static_cast<std::size_t>(channels) + static_cast<std::size_t>(c)] = rgba[i * 4 + static_cast<std::size_t>(c)];
 }
 
-void glTextureView(GLuint, GLenum, GLuint, GLenum, GLuint, GLuint, GLuint, GLuint) {
-    unavailable("glTextureView (the views of --view)", "texture views");
+// The views (--view, Module.t10Set("view", ...)) sample one level of a target through a texture view;
+// WebGL 2 has none, so `view` becomes a copy of that level (the views are drawn after the frame, when
+// the level no longer changes), blitted through two framebuffers.
+void glTextureView(GLuint view, GLenum target, GLuint original, GLenum, GLuint minLevel, GLuint numLevels, GLuint,
+                   GLuint) {
+    const auto it = textures().find(original);
+    if (target != GL_TEXTURE_2D || numLevels != 1 || it == textures().end() ||
+        static_cast<int>(minLevel) >= it->second.levels)
+        unavailable("glTextureView of anything but one defined level of a 2D texture", "texture views");
+    TextureInfo info = it->second;
+    const int width = std::max(1, info.width >> minLevel);
+    const int height = std::max(1, info.height >> minLevel);
+    const GLenum storage = info.emulatedR16 ? GL_R32F : info.format;
+    const SavedState saved;
+    // A level outside the original's base..max range cannot be attached (Part 3 leaves the bloom
+    // texture at base level 1): the range is opened for the copy and put back.
+    glBindTexture(GL_TEXTURE_2D, original);
+    GLint base = 0;
+    GLint max = 0;
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &base);
+    glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, &max);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, static_cast<GLint>(minLevel));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, static_cast<GLint>(minLevel));
+    glBindTexture(GL_TEXTURE_2D, view);
+    glTexStorage2D(GL_TEXTURE_2D, 1, storage, width, height);
+    GLuint fbos[2] = {};
+    glGenFramebuffers(2, fbos);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbos[0]);
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, original, static_cast<GLint>(minLevel));
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbos[1]);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, view, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glDeleteFramebuffers(2, fbos);
+    glBindTexture(GL_TEXTURE_2D, original);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, base);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, max);
+    info.width = width;
+    info.height = height;
+    info.levels = 1;
+    textures()[view] = info;
 }
 void glDebugMessageCallback(GLDEBUGPROC, const void*) {} // no debug output in WebGL 2: nothing to remove
 void glDispatchCompute(GLuint, GLuint, GLuint) { unavailable("glDispatchCompute (--key exact)", "compute shaders"); }
