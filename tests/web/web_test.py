@@ -194,7 +194,8 @@ class Page:
             if method == "Runtime.exceptionThrown":
                 found.append("script error: " + params["exceptionDetails"].get("exception", {}).get(
                     "description", params["exceptionDetails"].get("text", "")))
-            elif method == "Log.entryAdded" and params["entry"]["level"] == "error":
+            elif method == "Log.entryAdded" and params["entry"]["level"] == "error" and \
+                    not params["entry"].get("url", "").endswith("/favicon.ico"):  # Chromium asks for it by itself
                 found.append("console: " + params["entry"].get("text", ""))
             elif method == "Runtime.consoleAPICalled" and params.get("type") == "error":
                 found.append("console: " + " ".join(str(a.get("value", a.get("description", "")))
