@@ -12,11 +12,10 @@
 # build a scratch student folder without touching the source tree.
 set(T10_STUDENT_DIR ${PROJECT_SOURCE_DIR}/student CACHE PATH "Folder whose sub-folders are students' own stages")
 
-# Why a glob here, where the project otherwise lists files explicitly: student/ is not part of the
-# repository (it is ignored by git), so there is no list to keep; the glob only discovers folders, and
-# CONFIGURE_DEPENDS makes the next build re-run it, so a folder created by `make student` is picked up
-# without a manual re-configure. The files inside each folder are still named explicitly.
-function(t10_add_student_stages)
+# t10_add_student_stage(<name> <folder>): the program student_<name> from <folder>/Tutorial10.cpp and
+# the folder's shaders (t10_add_student_stages calls it for each folder; the web tests' compare
+# stages, cmake/T10WebCompare.cmake, for theirs). In the web build the page gets the compare view too.
+function(t10_add_student_stage name folder)
     # t10_flags without -Werror: the same warnings, definitions and (asan preset) sanitizers.
     if(NOT TARGET t10_student_flags)
         add_library(t10_student_flags INTERFACE)
@@ -28,6 +27,29 @@ function(t10_add_student_stages)
             endif()
         endforeach()
     endif()
+    set(target student_${name})
+    add_executable(${target} EXCLUDE_FROM_ALL ${folder}/Tutorial10.cpp)
+    target_link_libraries(${target} PRIVATE t10_common t10_student_flags)
+    if(EMSCRIPTEN)
+        # The browser build (`make web STAGE=student_<name>`): the folder packaged with the page, and
+        # ?compare=1 against the reference part (cmake/T10WebCompare.cmake).
+        target_compile_definitions(${target} PRIVATE
+            T10_STAGE_NAME="${target}"
+            T10_STAGE_SHADER_DIR="${T10_WEB_ROOT}/${target}")
+        t10_web_stage(${target} ${folder})
+        t10_web_compare(${target} ${folder})
+    else()
+        target_compile_definitions(${target} PRIVATE
+            T10_STAGE_NAME="${target}"
+            T10_STAGE_SHADER_DIR="${folder}")
+    endif()
+endfunction()
+
+# Why a glob here, where the project otherwise lists files explicitly: student/ is not part of the
+# repository (it is ignored by git), so there is no list to keep; the glob only discovers folders, and
+# CONFIGURE_DEPENDS makes the next build re-run it, so a folder created by `make student` is picked up
+# without a manual re-configure. The files inside each folder are still named explicitly.
+function(t10_add_student_stages)
     file(GLOB children LIST_DIRECTORIES true CONFIGURE_DEPENDS ${T10_STUDENT_DIR}/*)
     set(names "")
     set(lines "")
@@ -41,20 +63,8 @@ function(t10_add_student_stages)
             message(WARNING "${child}: not built: a student folder's name may hold only letters, digits and _")
             continue()
         endif()
+        t10_add_student_stage(${name} ${child})
         set(target student_${name})
-        add_executable(${target} EXCLUDE_FROM_ALL ${child}/Tutorial10.cpp)
-        target_link_libraries(${target} PRIVATE t10_common t10_student_flags)
-        if(EMSCRIPTEN)
-            # The browser build (`make web STAGE=student_<name>`): the folder packaged with the page.
-            target_compile_definitions(${target} PRIVATE
-                T10_STAGE_NAME="${target}"
-                T10_STAGE_SHADER_DIR="${T10_WEB_ROOT}/${target}")
-            t10_web_stage(${target} ${child})
-        else()
-            target_compile_definitions(${target} PRIVATE
-                T10_STAGE_NAME="${target}"
-                T10_STAGE_SHADER_DIR="${child}")
-        endif()
         list(APPEND names ${target})
         string(APPEND lines "${target} ${child}\n")
     endforeach()

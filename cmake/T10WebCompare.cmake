@@ -11,13 +11,14 @@
 #   - the golden comparison itself (t10_compare_export: common/base compare.cpp behind C functions)
 #     linked in, so the page judges with the tests' code;
 #   - common/base/src/compare_page.js as --post-js (it acts only with ?compare=1) and a --pre-js
-#     naming the reference (t10CompareReference).
+#     naming the reference (t10CompareReference);
+#   - the reference stage's page built with it (a dependency), since the compare page loads it.
 # A folder whose part cannot be told still builds; its compare page says why it has no reference.
 function(t10_web_compare target folder)
     get_filename_component(name ${folder} NAME)
     set(part "")
     if(name MATCHES "(^|_)part([1-3])($|_)")
-        set(part ${CMAKE_MATCH_1})
+        set(part ${CMAKE_MATCH_2})
     elseif(EXISTS ${folder}/Tutorial10.cpp)
         file(STRINGS ${folder}/Tutorial10.cpp header LIMIT_COUNT 5 REGEX "Tutorial 10, Part [1-3]")
         if(header MATCHES "Tutorial 10, Part ([1-3])")
@@ -41,6 +42,10 @@ function(t10_web_compare target folder)
         set(tolerance ${PROJECT_SOURCE_DIR}/tests/golden/${reference}.tolerance)
         target_link_options(${target} PRIVATE "SHELL:--preload-file ${tolerance}@/t10/compare/reference.tolerance")
         list(APPEND depends ${tolerance})
+        # The page loads the reference's page beside it: `make web STAGE=student_partN` builds both.
+        if(TARGET ${reference})
+            add_dependencies(${target} ${reference})
+        endif()
     else()
         message(WARNING "${folder}: the web compare page has no reference: name the folder partN (N = 1, 2, 3)")
     endif()

@@ -91,9 +91,10 @@ t10_add_web_test("without EXT_color_buffer_float the page says so" nofloat tutor
 
 # The compare page of a student's build: two student stages of the web build (cmake/T10WebCompare.cmake,
 # t10_web_compare_test_students), a copy of Part 1 with a wrong white point and a plain copy, built
-# here into the web build (the step that needs emscripten), then judged by their ?compare=1 pages.
+# here into the web build (the step that needs emscripten; NODE_PATH as the Makefile's make web sets it:
+# Debian's emscripten finds its Node modules there), then judged by their ?compare=1 pages.
 add_test(NAME "web: build the compare test's student stages"
-         COMMAND sh -c "if [ ! -f \"$1/build.ninja\" ]; then echo \"SKIP: $1 is not configured: make web configures it\" >&2; exit 77; fi; exec \"$0\" --build \"$1\" --target t10_web_compare_test_students"
+         COMMAND sh -c "if [ ! -f \"$1/build.ninja\" ]; then echo \"SKIP: $1 is not configured: make web configures it\" >&2; exit 77; fi; NODE_PATH=\"\${NODE_PATH:-/usr/share/nodejs}\" exec \"$0\" --build \"$1\" --target t10_web_compare_test_students"
                  ${CMAKE_COMMAND} ${T10_WEB_BUILD})
 set_tests_properties("web: build the compare test's student stages" PROPERTIES
                      FIXTURES_SETUP web_students TIMEOUT 300 LABELS web SKIP_RETURN_CODE 77)
