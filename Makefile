@@ -16,12 +16,13 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
 # tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter;
-# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; the
-# site's tools and fonts) and Catch2. `make run` installs none of them.
+# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; emscripten: the
+# browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
+# run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
-TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools \
+TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
                  jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -109,7 +110,9 @@ run: build
 # make test installs what the build needs first (with Catch2, which turns the tests on, and python3-venv
 # for FLIP's venv); then, while the C++ builds, apt-get installs what only the tests run (TEST_PACKAGES,
 # its output in $(BUILD)/test-packages.log) and pip makes FLIP's venv, both mostly waiting on the
-# network and dpkg; then CMake configures again, finding the programs installed meanwhile (xvfb-run,
+# network and dpkg; as soon as the packages are in, `make web` builds the browser pages beside the
+# native build (emscripten, into $(OUT)/web; its output in $(BUILD)/web.log) for ctest's web tests
+# (tests/web/); then CMake configures again, finding the programs installed meanwhile (xvfb-run,
 # jekyll, chromium), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
 # (GALLIVM_PERF=nopt; the grader's renders always do): the frames are bit-identical (the test
 # "llvmpipe: ... the same bits" checks it) and the suite's small renders spend more CPU compiling
@@ -123,12 +126,18 @@ test: deps
 	    $(MAKE) --no-print-directory deps PACKAGES="$$missing" >$(BUILD)/test-packages.log 2>&1 & packages=$$!; \
 	fi; \
 	$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \
+	mkdir -p $(BUILD); \
+	( if [ -n "$$missing" ]; then while kill -0 $$packages 2>/dev/null; do sleep 2; done; fi; \
+	  if command -v emcc >/dev/null; then $(MAKE) --no-print-directory web >$(BUILD)/web.log 2>&1; \
+	  else echo "emcc is not installed: no web build (the web tests report themselves skipped)" >$(BUILD)/web.log; fi ) & web=$$!; \
 	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; \
 	if [ -n "$$missing" ] && ! wait $$packages; then \
 	    tail -n 20 $(BUILD)/test-packages.log; echo "make test: installing $$missing failed (log: $(BUILD)/test-packages.log)"; exit 1; \
 	fi; \
 	[ $$built -eq 0 ] || exit $$built; \
-	if [ -n "$$missing" ]; then cmake $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS); fi
+	if [ -n "$$missing" ]; then cmake $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS); fi; \
+	wait $$web || { tail -n 30 $(BUILD)/web.log; echo "make test: make web failed (log: $(BUILD)/web.log)"; exit 1; }; \
+	grep -h '^make web: built\|^emcc is not' $(BUILD)/web.log || true
 	cd $(BUILD) && GALLIVM_PERF=nopt ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 bless: build
