@@ -197,6 +197,8 @@ class Page:
             elif method == "Log.entryAdded" and params["entry"]["level"] == "error" and \
                     not params["entry"].get("url", "").endswith("/favicon.ico"):  # Chromium asks for it by itself
                 found.append("console: " + params["entry"].get("text", ""))
+            elif method == "Log.entryAdded" and "WebGL" in params["entry"].get("text", "")[:40]:
+                found.append("WebGL: " + params["entry"].get("text", ""))  # which call a GL error came from
             elif method == "Runtime.consoleAPICalled" and params.get("type") == "error":
                 found.append("console: " + " ".join(str(a.get("value", a.get("description", "")))
                                                     for a in params.get("args", [])))
