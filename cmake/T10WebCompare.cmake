@@ -83,8 +83,8 @@ function(t10_web_compare_test_students)
             file(COPY_FILE ${source} ${folder}/${file} ONLY_IF_DIFFERENT)
         endforeach()
         t10_add_student_stage(t10test_${kind}_part1 ${folder})
-        # Test fixtures: -O1 (after the build type's -O3, so it wins) halves their compile and link
-        # in make test; what they test, the page and the comparison, does not depend on it.
+        # Test fixtures: -O1 (after the build type's -O3, so it wins) spares them wasm-opt's -O3 passes
+        # at link in make test; what they test, the page and the comparison, does not depend on it.
         target_compile_options(student_t10test_${kind}_part1 PRIVATE -O1)
         target_link_options(student_t10test_${kind}_part1 PRIVATE -O1)
         list(APPEND targets student_t10test_${kind}_part1)
