@@ -15,6 +15,7 @@
 
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 EM_JS(void, t10PageState, (const char* state, int frames), {
     document.body.dataset.t10Frames = String(frames);
@@ -138,7 +139,23 @@ std::string App::webSet(const std::string& name, const std::string& value) {
         parseCaptured(webArgs_, stage_, previous, ignored);
         return message.empty() ? "--" + name + ": not applied" : message;
     }
-    webArgs_ = std::move(args);
+    // A value the parser accepts may still be refused when applied (an unknown --camera): then
+    // everything is put back as it was and the message returned; the page keeps its frame.
+    const std::vector<std::string> previousArgs = std::exchange(webArgs_, std::move(args));
+    const Settings previous = settings_;
+    try {
+        return applyWebSettings(next);
+    } catch (const UsageError& error) {
+        webArgs_ = previousArgs;
+        settings_ = previous;
+        Settings restored;
+        std::string ignored;
+        parseCaptured(webArgs_, stage_, restored, ignored);
+        return std::string(stage_.name) + ": error: " + error.what();
+    }
+}
+
+std::string App::applyWebSettings(const Settings& next) {
     const bool sizeChanged = next.context.width != settings_.context.width || next.context.height != settings_.context.height;
     const bool cameraChanged = next.scene.camera != settings_.scene.camera;
     const std::string viewBefore = settings_.views.view;

@@ -73,6 +73,11 @@ public:
 #endif
 
 private:
+#ifdef __EMSCRIPTEN__
+    std::string applyWebSettings(const Settings& next); // webSet's second half: rebuild what changed
+#endif
+
+private:
     void loadScene(); // --scene (or the built-in scene) and --camera
     void resize(int width, int height);
     void buildStage();
