@@ -28,6 +28,7 @@ import argparse
 import base64
 import json
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -218,7 +219,7 @@ def check_controls(browser, session, stage, need, changes, tries, min_changed, o
     """The controls are the page's option list, and each change changes the frame and comes back."""
     problems = []
     got = json.loads(evaluate(browser, session, f"{OPTIONS}({json.dumps(stage)})"))
-    names = [o["name"] for o in got["raw"].get("options", [])]
+    names = [re.sub(r"\{[^}]*\}$", "", o["name"]) for o in got["raw"].get("options", [])]
     listed = got["read"]
     state = next(s for s in states(browser, session) if s["stage"] == stage)
     controllable = [o["name"] for o in listed if o["type"] in ("flag", "choice") or

@@ -78,8 +78,10 @@
   // --view the views the page says WebGL2 can show.
   function normalise(data) {
     var out = [];
-    ((data && data.options) || []).forEach(function (o) {
-      if (!wanted(o)) return;
+    ((data && data.options) || []).forEach(function (raw) {
+      // CLI11's spelling of a negated flag ("no-bloom{false}") is the option's name plus its value.
+      var o = Object.assign({}, raw, { name: String(raw.name || "").replace(/\{[^}]*\}$/, "") });
+      if (!/^[a-z][a-z0-9-]*$/.test(o.name) || !wanted(o)) return;
       var text = o.typeText || (typeof o.type === "string" && /^[A-Z]/.test(o.type) ? o.type : "");
       var option = { name: o.name, help: o.description || o.help || "", type: o.type,
                      min: o.min, max: o.max, choices: o.choices, value: o.value,
