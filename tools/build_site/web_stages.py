@@ -86,22 +86,23 @@ def web_data(web_dir, names, measurements_path, log):
         total, packed = sizes(folder)
         entry = {"bytes": total, "gzip_bytes": packed, "size_text": megabytes(total),
                  "gzip_text": megabytes(packed), "files": len(stage_files(folder)),
-                 "first_frame_ms": None, "measured_text": "", "runs": []}
+                 "first_frame_ms": None, "first_frame_text": "not measured", "measured_text": "", "runs": []}
         m = (measured or {}).get("stages", {}).get(name)
         if m and m.get("fingerprint") == fingerprint(folder) and m.get("median_ms") is not None:
             entry["first_frame_ms"] = int(m["median_ms"])
             entry["runs"] = [int(v) for v in m.get("runs_ms", [])]
+            entry["first_frame_text"] = f"{entry['first_frame_ms'] / 1000:.1f} s"
             renderer = data["machine"].get("renderer") or "an unnamed renderer"
             if "SwiftShader" in renderer or "llvmpipe" in renderer:
                 renderer = ("SwiftShader" if "SwiftShader" in renderer else "Mesa's llvmpipe") + " (WebGL drawn on the CPU)"
-            entry["measured_text"] = (f"When the site was built: first frame {entry['first_frame_ms'] / 1000:.1f} s "
+            entry["measured_text"] = (f"When the site was built: first frame {entry['first_frame_text']} "
                                       f"after opening the page, in headless Chromium with {renderer}.")
             data["measured_any"] = True
         elif m:
             entry["measured_text"] = "Not measured for this build (the stage changed since): make site measures it."
         data["stages"][name] = entry
         data["rows"].append(dict(entry, stage=name))
-        first = f"{entry['first_frame_ms'] / 1000:.1f} s" if entry["first_frame_ms"] is not None else "not measured"
+        first = entry["first_frame_text"]
         log(f"web: {name}: {entry['size_text']} ({entry['gzip_text']} gzip-compressed, {entry['files']} files), "
             f"first frame {first}")
     if web_dir and not built:
