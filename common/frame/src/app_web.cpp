@@ -197,7 +197,9 @@ std::string App::webOptions() const {
     }
     nlohmann::json options = nlohmann::json::array();
     auto describe = [&](const CLI::Option* option, const std::string& group) {
-        const std::string name = option->get_name(false, true).substr(2);
+        // CLI11 names a negated flag "--no-bloom{false}": the option's name is the part before "{".
+        std::string name = option->get_name(false, true).substr(2);
+        name = name.substr(0, name.find('{'));
         nlohmann::json entry{{"name", name},
                              {"group", group},
                              {"description", option->get_description()},
