@@ -7,42 +7,22 @@
 #include "t10/error.hpp"
 #include "t10/glsl_es.hpp"
 
+#include "repository_shaders.hpp"
 #include "t10_catch.hpp"
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <regex>
 #include <sstream>
 
 namespace fs = std::filesystem;
 using namespace std::string_literals;
+using t10::test::readText;
+using t10::test::repositoryShaders;
+using t10::test::stageOf;
 
 namespace {
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-// Every .vert and .frag the stages, common/ and the tools load (found on disk, so a new shader is
-// tested without editing this file).
-std::vector<fs::path> repositoryShaders() {
-    std::vector<fs::path> shaders;
-    for (const char* folder : {"common", "extras", "tutorial10_part0_start", "tutorial10_part1_tonemap",
-                               "tutorial10_part2_bloom", "tutorial10_part3_gaussian", "tools"})
-        for (const auto& entry : fs::recursive_directory_iterator(fs::path(T10_SOURCE_ROOT) / folder))
-            if (entry.path().extension() == ".vert" || entry.path().extension() == ".frag") shaders.push_back(entry.path());
-    std::sort(shaders.begin(), shaders.end());
-    return shaders;
-}
-
-t10::GlslStage stageOf(const fs::path& file) {
-    return file.extension() == ".vert" ? t10::GlslStage::Vertex : t10::GlslStage::Fragment;
-}
 
 t10::GlslEsShader translate(const std::string& source, t10::GlslStage stage = t10::GlslStage::Fragment) {
     return t10::translateToGlslEs(source, "in.frag", stage);

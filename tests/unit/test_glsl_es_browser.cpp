@@ -4,58 +4,25 @@
 // source's. Built only where CMake finds Chromium; elsewhere the test "glsl es: Chromium" is skipped.
 #include "t10/glsl_es.hpp"
 
+#include "repository_shaders.hpp"
 #include "t10_catch.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
+using namespace t10::test;
 
 namespace {
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-std::vector<fs::path> repositoryShaders() {
-    std::vector<fs::path> shaders;
-    for (const char* folder : {"common", "extras", "tutorial10_part0_start", "tutorial10_part1_tonemap",
-                               "tutorial10_part2_bloom", "tutorial10_part3_gaussian", "tools"})
-        for (const auto& entry : fs::recursive_directory_iterator(fs::path(T10_SOURCE_ROOT) / folder))
-            if (entry.path().extension() == ".vert" || entry.path().extension() == ".frag") shaders.push_back(entry.path());
-    std::sort(shaders.begin(), shaders.end());
-    return shaders;
-}
 
 bool isVertex(const fs::path& file) { return file.extension() == ".vert"; }
 
 std::string translate(const std::string& source, const fs::path& file) {
     return t10::translateToGlslEs(source, file.string(), isVertex(file) ? t10::GlslStage::Vertex : t10::GlslStage::Fragment)
         .source;
-}
-
-// The source with an undeclared name appended to the last line that starts with '}'; `line` gets
-// that line's number.
-std::string withError(const std::string& source, int& line) {
-    std::vector<std::string> lines;
-    std::istringstream in(source);
-    for (std::string text; std::getline(in, text);) lines.push_back(text);
-    std::size_t target = lines.size();
-    while (target > 0 && lines[target - 1].rfind('}', 0) != 0) --target;
-    REQUIRE(target > 0);
-    lines[target - 1] += " float t10Broken = t10UndeclaredName;";
-    line = static_cast<int>(target);
-    std::string out;
-    for (const std::string& text : lines) out += text + "\n";
-    return out;
 }
 
 // Compiles every case's shader (and links it with `with`, when given) in WebGL 2 and returns, per
@@ -146,12 +113,10 @@ TEST_CASE("WebGL 2 compiles every translation and reports a deliberate error on 
         add(file.string() + " with an error on line " + std::to_string(line), file, translate(broken, file), line);
     }
     int line = 0;
-    const std::string first = withError("#version 430 core\nout vec4 c;\n\nvoid main() {\n    c = vec4(1.0);\n}\n", line);
+    const std::string first = withError(kVersionOnFirstLine, line);
     add("#version on line 1, an error on line " + std::to_string(line), "first.frag", translate(first, "first.frag"), line);
     // The check can fail: desktop GLSL under an ES version line does not compile.
-    std::string desktop = readText(root / "tutorial10_part3_gaussian/Gauss.frag");
-    desktop.replace(desktop.find("#version 430 core"), 17, "#version 300 es\nprecision highp float;");
-    add("untranslated Gauss.frag", "Gauss.frag", desktop, -1);
+    add("untranslated Gauss.frag", "Gauss.frag", desktopPassedOffAsEs(), -1);
 
     const nlohmann::json results = runInChromium(cases);
     REQUIRE(results.size() == cases.size());

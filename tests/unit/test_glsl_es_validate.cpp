@@ -4,34 +4,17 @@
 // glslangValidator; without it ctest shows the test "glsl es: glslangValidator" as skipped.
 #include "t10/glsl_es.hpp"
 
+#include "repository_shaders.hpp"
 #include "t10_catch.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 namespace fs = std::filesystem;
+using namespace t10::test;
 
 namespace {
-
-std::string readText(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-}
-
-std::vector<fs::path> repositoryShaders() {
-    std::vector<fs::path> shaders;
-    for (const char* folder : {"common", "extras", "tutorial10_part0_start", "tutorial10_part1_tonemap",
-                               "tutorial10_part2_bloom", "tutorial10_part3_gaussian", "tools"})
-        for (const auto& entry : fs::recursive_directory_iterator(fs::path(T10_SOURCE_ROOT) / folder))
-            if (entry.path().extension() == ".vert" || entry.path().extension() == ".frag") shaders.push_back(entry.path());
-    std::sort(shaders.begin(), shaders.end());
-    return shaders;
-}
 
 struct Result {
     int status;
@@ -54,10 +37,6 @@ Result validate(const std::string& source, const std::string& name) {
     return result;
 }
 
-t10::GlslStage stageOf(const fs::path& file) {
-    return file.extension() == ".vert" ? t10::GlslStage::Vertex : t10::GlslStage::Fragment;
-}
-
 } // namespace
 
 TEST_CASE("glslangValidator accepts the translation of every shader of the repository", "[glsl_es][glslang]") {
@@ -72,10 +51,7 @@ TEST_CASE("glslangValidator accepts the translation of every shader of the repos
 }
 
 TEST_CASE("glslangValidator rejects desktop GLSL passed off as ES (the check can fail)", "[glsl_es][glslang]") {
-    // The untranslated Part 3 blur with only its #version changed: subroutines, binding layouts.
-    std::string source = readText(fs::path(T10_SOURCE_ROOT) / "tutorial10_part3_gaussian/Gauss.frag");
-    source.replace(source.find("#version 430 core"), 17, "#version 300 es\nprecision highp float;");
-    CHECK(validate(source, "desktop.frag").status != 0);
+    CHECK(validate(desktopPassedOffAsEs(), "desktop.frag").status != 0);
 }
 
 TEST_CASE("a deliberate error on line N of a shader is reported on line N", "[glsl_es][glslang]") {
@@ -83,17 +59,10 @@ TEST_CASE("a deliberate error on line N of a shader is reported on line N", "[gl
     // shader whose #version is its first line (the translator adds `#line 2` there).
     std::vector<std::pair<std::string, std::string>> sources; // name, source
     for (const fs::path& file : repositoryShaders()) sources.emplace_back(file.string(), readText(file));
-    sources.emplace_back("first-line.frag", "#version 430 core\nout vec4 c;\n\nvoid main() {\n    c = vec4(1.0);\n}\n");
+    sources.emplace_back("first-line.frag", kVersionOnFirstLine);
     for (auto& [name, source] : sources) {
-        std::vector<std::string> lines;
-        std::istringstream in(source);
-        for (std::string line; std::getline(in, line);) lines.push_back(line);
-        std::size_t target = lines.size();
-        while (target > 0 && lines[target - 1].rfind('}', 0) != 0) --target;
-        REQUIRE(target > 0);
-        lines[target - 1] += " float t10Broken = t10UndeclaredName;";
-        std::string broken;
-        for (const std::string& line : lines) broken += line + "\n";
+        int target = 0;
+        const std::string broken = withError(source, target);
         const fs::path file(name);
         const auto es = t10::translateToGlslEs(broken, name, stageOf(file));
         const Result result = validate(es.source, "broken" + file.extension().string());
