@@ -210,12 +210,26 @@ def check_pages(workflow):
     return errors + [f"Pages: {e}" for e in unpinned(jobs)]
 
 
-def breakages(workflow):
-    """Copies of the workflow, each broken in one way check() must reject."""
+def editor(workflow):
+    """edit(label, change): (label, a copy of workflow that change(copy) broke), for the breakages."""
     def edit(label, change):
         broken = copy.deepcopy(workflow)
         change(broken)
         return label, broken
+    return edit
+
+
+def unpin(broken):
+    """Every action used without its pinned version."""
+    for job in broken["jobs"].values():
+        for step in job.get("steps", []):
+            if "uses" in step:
+                step["uses"] = step["uses"].split("@")[0]
+
+
+def breakages(workflow):
+    """Copies of the workflow, each broken in one way check() must reject."""
+    edit = editor(workflow)
 
     def jobs_running(broken, command):
         return [j for j in broken["jobs"].values() if command in runs(j)]
@@ -228,12 +242,6 @@ def breakages(workflow):
     def drop_step(broken, command, predicate):
         for job in jobs_running(broken, command):
             job["steps"] = [s for s in job["steps"] if not predicate(s)]
-
-    def unpin(broken):
-        for job in broken["jobs"].values():
-            for step in job["steps"]:
-                if "uses" in step:
-                    step["uses"] = step["uses"].split("@")[0]
 
     def unprivileged(broken):
         for job in jobs_running(broken, "make distro-check"):
@@ -277,10 +285,7 @@ def web_only_on(broken, system):
 
 def pages_breakages(workflow):
     """Copies of the Pages workflow, each broken in one way check_pages() must reject."""
-    def edit(label, change):
-        broken = copy.deepcopy(workflow)
-        change(broken)
-        return label, broken
+    edit = editor(workflow)
 
     def drop(broken, predicate):
         for job in broken["jobs"].values():
@@ -289,12 +294,6 @@ def pages_breakages(workflow):
     def each_job(broken, change):
         for job in broken["jobs"].values():
             change(job)
-
-    def unpin(broken):
-        for job in broken["jobs"].values():
-            for step in job.get("steps", []):
-                if "uses" in step:
-                    step["uses"] = step["uses"].split("@")[0]
 
     runs_ = lambda word: (lambda s: word in str(s.get("run", "")))
     uses_ = lambda word: (lambda s: word in str(s.get("uses", "")))
