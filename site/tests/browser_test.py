@@ -2,8 +2,8 @@
 """Loads a page of the built site in headless Chromium and checks what a reader would see.
 
 The site is served from a local HTTP server on 127.0.0.1 (a free port) and Chromium is driven over
-the DevTools protocol through a pipe (--remote-debugging-pipe), so nothing beyond the Python standard
-library and Debian's chromium is needed. Chromium resolves every host name except 127.0.0.1 to
+the DevTools protocol through a pipe (tools/web/cdp.py, the repository's one client), so nothing
+beyond the Python standard library and Debian's chromium is needed. Chromium resolves every host name except 127.0.0.1 to
 "not found", and every request it makes is recorded: the page must not reach for the network.
 
 Checks, in both the light and the dark scheme:
@@ -24,25 +24,19 @@ It writes full-page screenshots (<page>-light.png, <page>-dark.png) into --out.
 """
 
 import argparse
-import base64
-import functools
 import html.parser
-import http.server
 import json
 import os
 import re
-import select
 import shutil
-import signal
-import subprocess
 import sys
-import tempfile
-import threading
 import time
 
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
+import cdp  # noqa: E402  (the DevTools client: Browser, the local server, evaluate, screenshots)
 
-class Failure(Exception):
-    pass
+Failure = cdp.Failure
 
 
 # --- The static HTML: how many formulas should be rendered -------------------------------------
@@ -74,141 +68,6 @@ def expected_formulas(path):
         counter.feed(f.read())
     text = "".join(counter.text)
     return len(re.findall(r"\\\(", text)), len(re.findall(r"\\\[", text))
-
-
-# --- Local server ------------------------------------------------------------------------------
-
-class QuietHandler(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, fmt, *args):
-        pass
-
-
-def start_server(root):
-    handler = functools.partial(QuietHandler, directory=root)
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)  # port 0: a free port
-    server.daemon_threads = True
-    thread = threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.1}, daemon=True)
-    thread.start()
-    return server
-
-
-# --- Chromium over the DevTools pipe -----------------------------------------------------------
-
-class Browser:
-    # gpu_args: how Chromium draws; the web stages' tests (tests/web/) pass WebGL flags instead.
-    def __init__(self, chromium, profile, log_path, deadline, gpu_args=("--disable-gpu",)):
-        self.deadline = deadline
-        to_chrome_r, self.to_chrome = os.pipe()
-        self.from_chrome, from_chrome_w = os.pipe()
-
-        def child_fds():  # Chromium reads commands on fd 3 and writes replies on fd 4
-            a, b = os.dup(to_chrome_r), os.dup(from_chrome_w)
-            os.dup2(a, 3)
-            os.dup2(b, 4)
-
-        self.log = open(log_path, "w")
-        args = [chromium, "--headless", "--no-sandbox", *gpu_args, "--remote-debugging-pipe",
-                f"--user-data-dir={profile}", "--no-first-run", "--no-default-browser-check",
-                "--disable-extensions", "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--disable-default-apps", "--disable-dev-shm-usage", "--mute-audio",
-                "--hide-scrollbars", "--force-device-scale-factor=1", "--window-size=1280,900",
-                # Everything but the local server is unreachable: a CDN link would fail loudly.
-                "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1",
-                "about:blank"]
-        # Started before any thread exists (preexec_fn is not thread-safe), in its own process
-        # group so that it and all its helper processes can be ended together.
-        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log,
-                                     preexec_fn=child_fds, close_fds=False, start_new_session=True)
-        os.close(to_chrome_r)
-        os.close(from_chrome_w)
-        self.buffer = b""
-        self.next_id = 0
-        self.events = []
-
-    def remaining(self):
-        left = self.deadline - time.monotonic()
-        if left <= 0:
-            raise Failure("time limit reached")
-        return left
-
-    def _read(self, timeout):
-        ready, _, _ = select.select([self.from_chrome], [], [], timeout)
-        if not ready:
-            return False
-        chunk = os.read(self.from_chrome, 1 << 20)
-        if not chunk:
-            raise Failure(f"chromium closed the DevTools pipe (exit code {self.proc.poll()}); see its log")
-        self.buffer += chunk
-        while b"\0" in self.buffer:
-            raw, self.buffer = self.buffer.split(b"\0", 1)
-            self.events.append(json.loads(raw))
-        return True
-
-    def send(self, method, params=None, session=None, timeout=30):
-        self.next_id += 1
-        message = {"id": self.next_id, "method": method, "params": params or {}}
-        if session:
-            message["sessionId"] = session
-        data = json.dumps(message).encode() + b"\0"
-        while data:
-            data = data[os.write(self.to_chrome, data):]
-        end = time.monotonic() + min(timeout, self.remaining())
-        while True:
-            for i, event in enumerate(self.events):
-                if event.get("id") == self.next_id:
-                    del self.events[i]
-                    if "error" in event:
-                        raise Failure(f"{method}: {event['error']}")
-                    return event.get("result", {})
-            if time.monotonic() > end:
-                raise Failure(f"{method}: no reply within {timeout} s")
-            self._read(0.1)
-
-    def wait_event(self, method, session=None, timeout=30):
-        end = time.monotonic() + min(timeout, self.remaining())
-        while True:
-            for i, event in enumerate(self.events):
-                if event.get("method") == method and (session is None or event.get("sessionId") == session):
-                    del self.events[i]
-                    return event.get("params", {})
-            if time.monotonic() > end:
-                raise Failure(f"no {method} within {timeout} s")
-            self._read(0.1)
-
-    def drain(self):
-        while self._read(0):
-            pass
-        events, self.events = [e for e in self.events if "method" in e], [e for e in self.events if "id" in e]
-        return events
-
-    def close(self):
-        try:
-            if self.proc.poll() is None:
-                try:
-                    self.send("Browser.close", timeout=5)
-                except Exception:
-                    pass
-                try:
-                    self.proc.wait(timeout=5)
-                except subprocess.TimeoutExpired:
-                    pass
-        finally:
-            # Whatever is left of the process group (helpers included) is ended, by group id.
-            for sig in (signal.SIGTERM, signal.SIGKILL):
-                try:
-                    os.killpg(self.proc.pid, sig)
-                except ProcessLookupError:
-                    break
-                try:
-                    self.proc.wait(timeout=3)
-                except subprocess.TimeoutExpired:
-                    pass
-            for fd in (self.to_chrome, self.from_chrome):
-                try:
-                    os.close(fd)
-                except OSError:
-                    pass
-            self.log.close()
 
 
 # --- What the page shows -------------------------------------------------------------------------
@@ -250,14 +109,6 @@ PAGE_STATE = r"""
   return JSON.stringify(r);
 })()
 """
-
-
-def evaluate(browser, session, expression, await_promise=False):
-    result = browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True,
-                                               "awaitPromise": await_promise}, session)
-    if "exceptionDetails" in result:
-        raise Failure(f"script error: {result['exceptionDetails'].get('text')}")
-    return result["result"].get("value")
 
 
 def rendered_step_numbers(browser, session):
@@ -325,7 +176,7 @@ def check_sections(browser, session, sections, label):
     problems = []
     for spec in sections:
         sid, _, before = spec.partition("<")
-        state = json.loads(evaluate(browser, session, f"{SECTION_STATE}({json.dumps(sid)}, {json.dumps(before)})"))
+        state = json.loads(cdp.evaluate(browser, session, f"{SECTION_STATE}({json.dumps(sid)}, {json.dumps(before)})"))
         if state is None:
             problems.append(f"[{label}] section #{sid} missing")
             continue
@@ -379,30 +230,31 @@ def check(state, page_html, expected_steps, allow_missing_from, label, plain=Fal
     return [f"[{label}] {p}" for p in problems]
 
 
-def screenshot(browser, session, path, width, view_height=900):
-    """A full-page screenshot: the viewport is made as tall as the page for the capture (sticky and
-    viewport-sized elements then render as in one tall window), then restored."""
-    metrics = browser.send("Page.getLayoutMetrics", {}, session)
-    height = int(metrics["cssContentSize"]["height"])
-    browser.send("Emulation.setDeviceMetricsOverride",
-                 {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session)
-    try:
-        shot = browser.send("Page.captureScreenshot", {
-            "format": "png", "fromSurface": True,
-            "clip": {"x": 0, "y": 0, "width": width, "height": height, "scale": 1}}, session, timeout=60)
-    finally:
-        browser.send("Emulation.setDeviceMetricsOverride",
-                     {"width": width, "height": view_height, "deviceScaleFactor": 1, "mobile": False}, session)
-    with open(path, "wb") as f:
-        f.write(base64.b64decode(shot["data"]))
-    return height
+def event_problems(events, base, label):
+    """What the page's events tell: a request beyond the local server (at `base`), a failed one, a script
+    or console error."""
+    problems = []
+    for event in events:
+        method, params = event.get("method"), event.get("params", {})
+        if method == "Network.requestWillBeSent":
+            url = params["request"]["url"]
+            if not (url.startswith(base) or url.startswith(("data:", "about:", "blob:"))):
+                problems.append(f"[{label}] request outside the local server: {url}")
+        elif method == "Network.responseReceived" and params["response"]["status"] >= 400:
+            problems.append(f"[{label}] HTTP {params['response']['status']}: {params['response']['url']}")
+        elif method == "Network.loadingFailed":
+            problems.append(f"[{label}] request failed: {params.get('errorText')}")
+        elif method == "Runtime.exceptionThrown":
+            problems.append(f"[{label}] script error: {params['exceptionDetails'].get('text')}")
+        elif method == "Log.entryAdded" and params["entry"]["level"] == "error":
+            problems.append(f"[{label}] console error: {params['entry'].get('text')}")
+    return problems
 
 
 def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, timeout=100,
         schemes=("light", "dark"), plain=False, sections=()):
     """Loads the page in each scheme; returns the list of problems found (empty: all good)."""
     started = time.monotonic()
-    deadline = started + timeout
     page_html = os.path.join(site, page)
     if not os.path.isfile(page_html):
         raise Failure(f"{page_html} does not exist: build the site first (make site)")
@@ -410,30 +262,18 @@ def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, tim
         raise Failure(f"{chromium}: not found (apt-get install chromium)")
     os.makedirs(out, exist_ok=True)
     stem = os.path.splitext(os.path.basename(page))[0]
-    profile = tempfile.mkdtemp(prefix="t10-chromium-")
-    browser = server = None
     problems = []
     light_background = None
-    try:
-        browser = Browser(chromium, profile, os.path.join(out, "chromium.log"), deadline)
-        server = start_server(site)
-        base = f"http://127.0.0.1:{server.server_address[1]}/"
-
-        target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-        session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        for domain in ("Page", "Network", "Runtime", "Log"):
-            browser.send(f"{domain}.enable", {}, session)
-        browser.send("Emulation.setDeviceMetricsOverride",
-                     {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
-
+    with cdp.browsing(site, chromium, os.path.join(out, "chromium.log"), started + timeout) as (browser, base):
+        _, session = cdp.open_tab(browser, ("Page", "Network", "Runtime", "Log"), (width, 900))
         for scheme in schemes:
             browser.send("Emulation.setEmulatedMedia",
                          {"features": [{"name": "prefers-color-scheme", "value": scheme}]}, session)
             browser.drain()
             browser.send("Page.navigate", {"url": base + page}, session)
             browser.wait_event("Page.loadEventFired", session, timeout=60)
-            evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
-            state = json.loads(evaluate(browser, session, PAGE_STATE))
+            cdp.evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
+            state = json.loads(cdp.evaluate(browser, session, PAGE_STATE))
             problems += check(state, page_html, steps, allow_missing_from, scheme, plain)
             problems += check_sections(browser, session, sections, scheme)
 
@@ -450,34 +290,13 @@ def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, tim
                 problems.append(f"[{scheme}] the page background stays {state['background']} in the dark scheme")
 
             shot = os.path.join(out, f"{stem}-{scheme}.png")
-            height = screenshot(browser, session, shot, width)
+            height = cdp.full_page_screenshot(browser, session, shot, width)
             print(f"{scheme}: {state['katex']} formulas, {len(state['images'])} images, "
                   f"{len(state['excerpts'])} excerpts, steps "
                   f"{shown[0][1] if shown else '-'}..{shown[-1][1] if shown else '-'}; "
                   f"screenshot {shot} ({width}x{height})", flush=True)
-
             # Everything the page asked for came from the local server, and nothing failed.
-            for event in browser.drain():
-                method, params = event.get("method"), event.get("params", {})
-                if method == "Network.requestWillBeSent":
-                    url = params["request"]["url"]
-                    if not (url.startswith(base) or url.startswith(("data:", "about:", "blob:"))):
-                        problems.append(f"[{scheme}] request outside the local server: {url}")
-                elif method == "Network.responseReceived" and params["response"]["status"] >= 400:
-                    problems.append(f"[{scheme}] HTTP {params['response']['status']}: {params['response']['url']}")
-                elif method == "Network.loadingFailed":
-                    problems.append(f"[{scheme}] request failed: {params.get('errorText')}")
-                elif method == "Runtime.exceptionThrown":
-                    problems.append(f"[{scheme}] script error: {params['exceptionDetails'].get('text')}")
-                elif method == "Log.entryAdded" and params["entry"]["level"] == "error":
-                    problems.append(f"[{scheme}] console error: {params['entry'].get('text')}")
-    finally:
-        if browser:
-            browser.close()
-        if server:
-            server.shutdown()
-            server.server_close()
-        shutil.rmtree(profile, ignore_errors=True)
+            problems += event_problems(browser.drain(), base, scheme)
     print(f"finished in {time.monotonic() - started:.1f} s", flush=True)
     return problems
 
@@ -505,8 +324,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        main()
-    except Failure as e:
-        print(f"FAIL: {e}", file=sys.stderr)
-        sys.exit(1)
+    cdp.run_main(main)

@@ -25,24 +25,20 @@ on two cores). Comparisons with the goldens are the web tests' (tests/web/), not
 """
 
 import argparse
-import base64
 import json
 import os
 import re
-import shutil
 import sys
-import tempfile
 import time
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from browser_test import Browser, Failure, start_server  # noqa: E402
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "web"))
-from web_test import RENDERERS  # noqa: E402  (the web tests' Chromium flags)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
+import cdp  # noqa: E402  (the DevTools client)
+from cdp import Failure, evaluate, screenshot  # noqa: E402
 
 # WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer (no
 # EXT_texture_norm16: the pages emulate GL_R16). The goldens' rasteriser, llvmpipe, is the web tests'.
-WEBGL_ARGS = RENDERERS["swiftshader"]
+WEBGL_ARGS = cdp.RENDERERS["swiftshader"]
 
 SKIP = 77
 
@@ -120,29 +116,16 @@ SET_CONTROL = r"""
 """
 
 
-def evaluate(browser, session, expression):
-    result = browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True}, session, timeout=60)
-    if "exceptionDetails" in result:
-        details = result["exceptionDetails"]
-        raise Failure(f"script error: {details.get('exception', {}).get('description') or details.get('text')}")
-    return result["result"].get("value")
-
-
 def states(browser, session):
     return json.loads(evaluate(browser, session, STATE))
 
 
 def wait_until(browser, session, done, timeout, what):
-    end = time.monotonic() + timeout
-    while True:
-        current = states(browser, session)
-        if done(current):
-            return current
-        if time.monotonic() > end:
-            raise Failure(f"{what} within {timeout:.0f} s; the embeds: " +
-                          "; ".join(f"{s['stage']}: {s['state']} (page {s['pageState']}) {s['note']} {s['error']}".strip()
-                                    for s in current))
-        time.sleep(0.2)
+    """Waits until done(the embeds' states); the failure lists each embed's."""
+    return cdp.wait_until(lambda: states(browser, session), done, timeout, what,
+                          lambda current: "; the embeds: " + "; ".join(
+                              f"{s['stage']}: {s['state']} (page {s['pageState']}) {s['note']} {s['error']}".strip()
+                              for s in current), interval=0.2)
 
 
 def pixels(browser, session, stage, key):
@@ -155,15 +138,6 @@ def differing_share(browser, session, a, b, threshold):
     return float(evaluate(browser, session, f"{DIFFER}({json.dumps(a)}, {json.dumps(b)}, {threshold})"))
 
 
-def screenshot(browser, session, path, clip=None):
-    params = {"format": "png", "fromSurface": True}
-    if clip:
-        params["clip"] = dict(clip, scale=1)
-    shot = browser.send("Page.captureScreenshot", params, session, timeout=90)
-    with open(path, "wb") as f:
-        f.write(base64.b64decode(shot["data"]))
-
-
 def element_clip(browser, session, selector):
     box = json.loads(evaluate(browser, session, f"""(() => {{ const e = document.querySelector({json.dumps(selector)});
         e.scrollIntoView(); const r = e.getBoundingClientRect();
@@ -172,15 +146,11 @@ def element_clip(browser, session, selector):
 
 
 def open_page(browser, url, width):
-    target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-    session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-    for domain in ("Page", "Runtime"):
-        browser.send(f"{domain}.enable", {}, session)
-    browser.send("Emulation.setDeviceMetricsOverride",
-                 {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+    """A tab `width` wide showing `url`, once loaded; returns its session."""
+    _, session = cdp.open_tab(browser, size=(width, 900))
     browser.send("Page.navigate", {"url": url}, session)
     browser.wait_event("Page.loadEventFired", session, timeout=60)
-    return target, session
+    return session
 
 
 def check_running(browser, session, expected, site, out, timeout):
@@ -282,13 +252,12 @@ def check_controls(browser, session, stage, need, changes, tries, min_changed, o
     return problems
 
 
-def check_no_webgl(chromium, site_url, profile_root, out, timeout, width):
+def check_no_webgl(chromium, site, page, out, timeout, width):
     """Without WebGL every embed keeps its picture and says why; nothing starts."""
-    browser = Browser(chromium, tempfile.mkdtemp(dir=profile_root), os.path.join(out, "chromium-no-webgl.log"),
-                      time.monotonic() + timeout, gpu_args=("--disable-gpu", "--disable-3d-apis"))
     problems = []
-    try:
-        _, session = open_page(browser, site_url, width)
+    with cdp.browsing(site, chromium, os.path.join(out, "chromium-no-webgl.log"), time.monotonic() + timeout,
+                      gpu_args=("--disable-gpu", "--disable-3d-apis")) as (browser, base):
+        session = open_page(browser, base + page, width)
         current = wait_until(browser, session, lambda c: all(s["state"] != "idle" or not s["src"] for s in c),
                              timeout / 2, "the embeds did not notice the missing WebGL")
         for s in current:
@@ -301,8 +270,6 @@ def check_no_webgl(chromium, site_url, profile_root, out, timeout, width):
         if first:
             screenshot(browser, session, os.path.join(out, "live-no-webgl.png"),
                        element_clip(browser, session, f'.live[data-stage="{first}"]'))
-    finally:
-        browser.close()
     return problems
 
 
@@ -335,15 +302,10 @@ def main():
         raise Failure(f"{args.site}/{args.page} does not exist: build the site first (make site)")
     os.makedirs(args.out, exist_ok=True)
     started = time.monotonic()
-    profile_root = tempfile.mkdtemp(prefix="t10-live-")
-    server = start_server(args.site)
-    url = f"http://127.0.0.1:{server.server_address[1]}/{args.page}"
-    browser = None
     problems = []
-    try:
-        browser = Browser(args.chromium, tempfile.mkdtemp(dir=profile_root), os.path.join(args.out, "chromium.log"),
-                          started + args.timeout, gpu_args=WEBGL_ARGS)
-        _, session = open_page(browser, url, args.width)
+    with cdp.browsing(args.site, args.chromium, os.path.join(args.out, "chromium.log"), started + args.timeout,
+                      gpu_args=WEBGL_ARGS) as (browser, base):
+        session = open_page(browser, base + args.page, args.width)
         found, shown = check_running(browser, session, built, args.site, args.out, 90)
         problems += found
         if evaluate(browser, session, "!!document.getElementById('live-costs')"):
@@ -355,15 +317,7 @@ def main():
                                        args.tries, args.min_changed, args.out, 60)
         elif args.controls_stage in names and args.controls_stage not in built:
             problems.append(f"{args.controls_stage}: not built in {args.web}, so its controls are untested")
-        browser.close()
-        browser = None
-        problems += check_no_webgl(args.chromium, url, profile_root, args.out, 60, args.width)
-    finally:
-        if browser:
-            browser.close()
-        server.shutdown()
-        server.server_close()
-        shutil.rmtree(profile_root, ignore_errors=True)
+    problems += check_no_webgl(args.chromium, args.site, args.page, args.out, 60, args.width)
     print(f"finished in {time.monotonic() - started:.1f} s; screenshots in {args.out}", flush=True)
     if problems:
         raise Failure("\n  ".join([f"{len(problems)} problem(s) with the live embeds:"] + problems))
@@ -372,8 +326,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except Failure as e:
-        print(f"FAIL: {e}", file=sys.stderr)
-        sys.exit(1)
+    cdp.run_main(main)

@@ -3,8 +3,8 @@
 
 usage: web_test.py COMMAND --web OUT_WEB --out DIR [options]
 
-Chromium is driven over the DevTools protocol (site/tests/browser_test.py's Browser: a pipe, a local
-server on 127.0.0.1, nothing else reachable). A page is loaded with the command line as its query
+Chromium is driven over the DevTools protocol (tools/web/cdp.py: a pipe, a local server on
+127.0.0.1, nothing else reachable; tools/web/web_page.py's StagePage: one tab on the stages' pages). A page is loaded with the command line as its query
 (?size=640x360&camera=default&frames=1, the goldens' settings), and the test waits for
 document.body.dataset.t10 to become "rendered" or "error" (the page's interface, WEB_CONTRACT.md).
 The frame is read with gl.readPixels from the default framebuffer, as --output reads it, and written
@@ -25,41 +25,21 @@ stages' GL_R16 key) or swiftshader (ANGLE on SwiftShader; it has no EXT_texture_
 Exit 0: passed; 1: failed (what and why on stderr); 77: cannot run here (no such page), said why.
 """
 import argparse
-import base64
 import json
 import os
 import shutil
-import struct
 import subprocess
 import sys
-import tempfile
 import time
-import zlib
 
 sys.dont_write_bytecode = True
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "site", "tests"))
-import browser_test  # noqa: E402  (the site's DevTools driver: Browser, start_server, evaluate)
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "web"))
+import cdp  # noqa: E402  (the DevTools client)
+import web_page  # noqa: E402  (a stage's page in one tab: its state, its frame)
 
-Failure = browser_test.Failure
+Failure = cdp.Failure
 GOLDEN_QUERY = "size=640x360&camera=default&frames=1"  # tests/golden/render_args.sh, as a query
-RENDERERS = {
-    # ANGLE's GL ES backend on Mesa (EGL surfaceless): llvmpipe, as the goldens were rendered.
-    "llvmpipe": ("--use-angle=gl-egl", "--ignore-gpu-blocklist"),
-    "swiftshader": ("--use-angle=swiftshader", "--enable-unsafe-swiftshader"),
-}
-
-# Records when the page's state changes, before any of the page's own scripts run.
-WATCH_STATE = r"""
-(() => {
-  window.__t10States = [];
-  new MutationObserver(() => {
-    const state = document.body && document.body.dataset.t10;
-    const last = window.__t10States[window.__t10States.length - 1];
-    if (state && (!last || last.state !== state)) window.__t10States.push({state, at: performance.now()});
-  }).observe(document, {attributes: true, subtree: true, attributeFilter: ['data-t10']});
-})();
-"""
 
 # A browser without float render targets: the extensions are hidden from the page, so they are
 # never enabled and an RGBA16F colour attachment stays incomplete, as there.
@@ -79,143 +59,21 @@ NO_FLOAT_TARGETS = r"""
 })();
 """
 
-# The canvas' drawing buffer as --output reads it: glReadPixels of the default framebuffer (bottom
-# row first), RGBA bytes in base64. The page keeps it (preserveDrawingBuffer).
-READ_PIXELS = r"""
-(() => {
-  const canvas = document.getElementById('canvas');
-  const gl = canvas.getContext('webgl2');
-  if (!gl) return JSON.stringify({error: 'the canvas has no WebGL2 context'});
-  const framebuffer = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
-  const packBuffer = gl.getParameter(gl.PIXEL_PACK_BUFFER_BINDING);
-  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
-  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
-  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
-  const pixels = new Uint8Array(w * h * 4);
-  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
-  const error = gl.getError();
-  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, framebuffer);
-  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, packBuffer);
-  let text = '';
-  for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode.apply(null, pixels.subarray(i, i + 0x8000));
-  return JSON.stringify({width: w, height: h, glError: error, data: btoa(text)});
-})()
-"""
 
-PAGE_STATE = r"""JSON.stringify({state: document.body ? document.body.dataset.t10 || '' : '',
-  frames: document.body ? document.body.dataset.t10Frames || '' : '',
-  verdict: document.body ? document.body.dataset.t10Verdict || '' : '',
-  error: (document.getElementById('t10-error') || {}).textContent || '',
-  states: window.__t10States || []})"""
-
-
-def write_png(path, width, height, rgba_bottom_first):
-    """An 8-bit RGB PNG, top row first, from RGBA rows bottom first (alpha dropped, as --output)."""
-    rows = []
-    stride = width * 4
-    for y in range(height - 1, -1, -1):
-        row = rgba_bottom_first[y * stride:(y + 1) * stride]
-        rgb = bytearray(width * 3)
-        rgb[0::3], rgb[1::3], rgb[2::3] = row[0::4], row[1::4], row[2::4]
-        rows.append(b"\0" + bytes(rgb))
-
-    def chunk(kind, data):
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
-           chunk(b"IDAT", zlib.compress(b"".join(rows), 6)) + chunk(b"IEND", b""))
-    with open(path + ".tmp", "wb") as f:
-        f.write(png)
-    os.replace(path + ".tmp", path)
-
-
-class Page:
-    """One Chromium with one tab on a local server over out/web."""
+class Page(web_page.StagePage):
+    """One Chromium with one tab on a local server over out/web, as the command line asks."""
 
     def __init__(self, args, scripts=()):
         self.args = args
-        self.profile = tempfile.mkdtemp(prefix="t10-web-")
-        self.browser = self.server = None
-        deadline = time.monotonic() + args.timeout
-        self.browser = browser_test.Browser(args.chromium, self.profile, os.path.join(args.out, "chromium.log"),
-                                            deadline, gpu_args=RENDERERS[args.renderer])
-        self.server = browser_test.start_server(args.web)
-        self.base = f"http://127.0.0.1:{self.server.server_address[1]}/"
-        target = self.browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-        self.session = self.browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        for domain in ("Page", "Runtime", "Log", "Network"):
-            self.browser.send(f"{domain}.enable", {}, self.session)
-        self.browser.send("Emulation.setDeviceMetricsOverride",
-                          {"width": 1400, "height": 1000, "deviceScaleFactor": 1, "mobile": False}, self.session)
-        for script in (WATCH_STATE,) + tuple(scripts):
-            self.browser.send("Page.addScriptToEvaluateOnNewDocument", {"source": script}, self.session)
-
-    def close(self):
-        try:
-            if self.browser:
-                self.browser.close()
-        finally:
-            if self.server:
-                self.server.shutdown()
-                self.server.server_close()
-            shutil.rmtree(self.profile, ignore_errors=True)
-
-    def evaluate(self, expression, await_promise=False):
-        return browser_test.evaluate(self.browser, self.session, expression, await_promise)
-
-    def state(self):
-        return json.loads(self.evaluate(PAGE_STATE))
+        super().__init__(args.web, args.chromium, os.path.join(args.out, "chromium.log"), cdp.RENDERERS[args.renderer],
+                         time.monotonic() + args.timeout, scripts)
 
     def open(self, stage, query):
-        url = f"{self.base}{stage}/index.html?{query}"
+        url = super().open(f"{stage}/index.html?{query}")
         print(f"loading {url} ({self.args.renderer})", flush=True)
-        self.browser.send("Page.navigate", {"url": url}, self.session)
-
-    def wait(self, done, what, timeout):
-        end = time.monotonic() + timeout
-        while True:
-            state = self.state()
-            if done(state):
-                return state
-            if time.monotonic() > end:
-                raise Failure(f"{what} within {timeout:.0f} s; the page says state={state['state']!r} "
-                              f"frames={state['frames']!r} error={state['error']!r}{self.problems()}")
-            time.sleep(0.1)
 
     def settled(self, timeout=None):
-        return self.wait(lambda s: s["state"] in ("rendered", "error"), "no 'rendered' or 'error'",
-                         timeout or self.args.timeout * 0.8)
-
-    def problems(self):
-        """Script errors and console errors so far, for a failure message."""
-        found = []
-        for event in self.browser.drain():
-            method, params = event.get("method"), event.get("params", {})
-            if method == "Runtime.exceptionThrown":
-                found.append("script error: " + params["exceptionDetails"].get("exception", {}).get(
-                    "description", params["exceptionDetails"].get("text", "")))
-            elif method == "Log.entryAdded" and params["entry"]["level"] == "error" and \
-                    not params["entry"].get("url", "").endswith("/favicon.ico"):  # Chromium asks for it by itself
-                found.append("console: " + params["entry"].get("text", ""))
-            elif method == "Log.entryAdded" and "WebGL" in params["entry"].get("text", "")[:40]:
-                found.append("WebGL: " + params["entry"].get("text", ""))  # which call a GL error came from
-            elif method == "Runtime.consoleAPICalled" and params.get("type") == "error":
-                found.append("console: " + " ".join(str(a.get("value", a.get("description", "")))
-                                                    for a in params.get("args", [])))
-        return "".join(f"\n  {line[:400]}" for line in found[:10])
-
-    def capture(self, path):
-        frame = json.loads(self.evaluate(READ_PIXELS))
-        if "error" in frame:
-            raise Failure(frame["error"])
-        if frame["glError"]:
-            raise Failure(f"gl.readPixels failed: GL error 0x{frame['glError']:04x}")
-        write_png(path, frame["width"], frame["height"], base64.b64decode(frame["data"]))
-        return frame["width"], frame["height"]
-
-    def screenshot(self, path):
-        """The whole page, as a reader scrolling it would see it."""
-        browser_test.screenshot(self.browser, self.session, path, 1400, 1000)
+        return super().settled(timeout or self.args.timeout * 0.8)
 
 
 def page_folder(args, stage):
@@ -344,7 +202,7 @@ def main():
     ap.add_argument("--tolerance", default=os.path.join(HERE, "..", "golden", "web.tolerance"))
     ap.add_argument("--imgcompare", help="the project's imgcompare program")
     ap.add_argument("--chromium", default="chromium")
-    ap.add_argument("--renderer", choices=sorted(RENDERERS), default="llvmpipe")
+    ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe")
     ap.add_argument("--timeout", type=float, default=120, help="seconds for the whole test")
     args = ap.parse_args()
     if args.command in ("golden", "live") and not (args.golden and args.imgcompare):
@@ -368,8 +226,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except Failure as e:
-        print(f"FAIL: {e}", file=sys.stderr)
-        sys.exit(1)
+    cdp.run_main(main)

@@ -20,21 +20,19 @@ import platform
 import shutil
 import statistics
 import sys
-import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.dont_write_bytecode = True
 sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "site", "tests"))
+sys.path.insert(0, os.path.join(HERE, "..", "web"))
 import web_stages  # noqa: E402
-from browser_test import Browser, Failure, start_server  # noqa: E402  (the site tests' DevTools client)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tests", "web"))
-from web_test import RENDERERS  # noqa: E402  (the web tests' Chromium flags)
+import cdp  # noqa: E402  (the DevTools client)
+from cdp import Failure, evaluate  # noqa: E402
 
 # WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer
 # (what a reader's browser falls back to; no EXT_texture_norm16, so the pages emulate GL_R16).
-WEBGL_ARGS = RENDERERS["swiftshader"]
+WEBGL_ARGS = cdp.RENDERERS["swiftshader"]
 
 # Installed before the page's scripts: the moment dataset.t10 first leaves "loading".
 OBSERVER = r"""
@@ -62,32 +60,15 @@ RENDERER = r"""
 """
 
 
-def evaluate(browser, session, expression):
-    result = browser.send("Runtime.evaluate", {"expression": expression, "returnByValue": True}, session)
-    if "exceptionDetails" in result:
-        raise Failure(f"script error: {result['exceptionDetails'].get('text')}")
-    return result["result"].get("value")
-
-
 def load_once(browser, url, timeout):
     """Opens url in a fresh tab; returns (milliseconds to the first frame, bytes received)."""
-    target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
+    target, session = cdp.open_tab(browser, ("Page", "Network", "Runtime"), scripts=(OBSERVER,))
     try:
-        session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        for domain in ("Page", "Network", "Runtime"):
-            browser.send(f"{domain}.enable", {}, session)
         browser.send("Network.setCacheDisabled", {"cacheDisabled": True}, session)
-        browser.send("Page.addScriptToEvaluateOnNewDocument", {"source": OBSERVER}, session)
         browser.drain()
         browser.send("Page.navigate", {"url": url}, session)
-        end = time.monotonic() + timeout
-        while True:
-            m = evaluate(browser, session, "window.__t10Measure || null")
-            if m and m["ms"] is not None:
-                break
-            if time.monotonic() > end:
-                raise Failure(f"{url}: no frame within {timeout} s")
-            time.sleep(0.05)
+        m = cdp.wait_until(lambda: evaluate(browser, session, "window.__t10Measure || null"),
+                           lambda m: m and m["ms"] is not None, timeout, f"{url}: no frame", interval=0.05)
         if m["state"] == "error":
             raise Failure(f"{url}: the page reports an error: {m['error']}")
         received = sum(e["params"].get("encodedDataLength", 0) for e in browser.drain()
@@ -132,14 +113,9 @@ def main():
               "note": (f"The machine was shared with other work (load average {load:.1f} on "
                        f"{os.cpu_count()} cores when the measurement started)." if load > 0.5 else ""),
               "stages": {}}
-    profile = tempfile.mkdtemp(prefix="t10-measure-")
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
-    browser = server = None
-    try:
-        browser = Browser(args.chromium, profile, os.path.abspath(args.out) + ".chromium.log",
-                          time.monotonic() + args.timeout * args.runs * len(names) + 60, gpu_args=WEBGL_ARGS)
-        server = start_server(os.path.abspath(args.web))
-        base = f"http://127.0.0.1:{server.server_address[1]}/"
+    with cdp.browsing(os.path.abspath(args.web), args.chromium, os.path.abspath(args.out) + ".chromium.log",
+                      time.monotonic() + args.timeout * args.runs * len(names) + 60, WEBGL_ARGS) as (browser, base):
         result["browser"] = browser.send("Browser.getVersion")["product"].replace("HeadlessChrome/", "Chromium ").replace("Chrome/", "Chromium ")
         for name in names:
             runs, received = [], 0
@@ -153,13 +129,6 @@ def main():
                                       "runs_ms": runs, "median_ms": median, "received_bytes": received}
             print(f"[site] {name}: first frame {median / 1000:.2f} s (runs {', '.join(f'{r / 1000:.2f}' for r in runs)} s), "
                   f"{web_stages.megabytes(received)} received", flush=True)
-    finally:
-        if browser:
-            browser.close()
-        if server:
-            server.shutdown()
-            server.server_close()
-        shutil.rmtree(profile, ignore_errors=True)
     with open(args.out, "w", encoding="utf-8") as f:
         json.dump(result, f, indent=1)
     print(f"[site] measured in {result['browser']}, {result['renderer']}; {result['cpu']}; written to {args.out}")
@@ -167,8 +136,4 @@ def main():
 
 
 if __name__ == "__main__":
-    try:
-        sys.exit(main())
-    except Failure as e:
-        print(f"[site] measure_web: {e}", file=sys.stderr)
-        sys.exit(1)
+    cdp.run_main(main, "[site] measure_web: ")

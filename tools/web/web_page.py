@@ -7,222 +7,222 @@ canvas keeps its pixels. This script serves --root on 127.0.0.1 (a free port), o
 under --root with its query, e.g. "tutorial10_part0_start/index.html?size=640x360&frames=1"), waits
 for rendered or error, runs each --eval expression in order (each may return a promise; after each
 that changes a setting, the page is waited on again), and prints one JSON object: state, error,
-frames, firstFrameMs, the evals' results; --png FILE writes the canvas (canvas.toDataURL) as a PNG.
+frames, firstFrameMs, the evals' results; --png FILE writes the frame as an RGB PNG, read with
+gl.readPixels as the binaries' --output reads it.
 Exit status: 0 rendered, 1 error or a time-out, 2 bad usage.
 
 Chromium drives WebGL 2 through SwiftShader here (no GPU): --use-angle=swiftshader with
---enable-unsafe-swiftshader. The DevTools protocol runs over a pipe (--remote-debugging-pipe), so
-only the Python standard library and Debian's chromium are needed. Importable: render_page() is the
-entry point other tests use (tests of issue 36).
+--enable-unsafe-swiftshader (T10_CHROMIUM_FLAGS adds flags). The DevTools client is cdp.py, beside
+this file. Importable: StagePage is one tab on the stages' pages, which the web stages' tests
+(tests/web/web_test.py) drive; render_page() is this script's report.
 """
 import argparse
 import base64
-import functools
-import http.server
+import contextlib
 import json
 import os
-import select
-import shutil
-import signal
-import subprocess
+import struct
 import sys
 import tempfile
-import threading
 import time
+import zlib
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cdp  # noqa: E402  (the DevTools client)
+
+Failure = cdp.Failure
+
+# Records when the page's state changes, before any of the page's own scripts run.
+WATCH_STATE = r"""
+(() => {
+  window.__t10States = [];
+  new MutationObserver(() => {
+    const state = document.body && document.body.dataset.t10;
+    const last = window.__t10States[window.__t10States.length - 1];
+    if (state && (!last || last.state !== state)) window.__t10States.push({state, at: performance.now()});
+  }).observe(document, {attributes: true, subtree: true, attributeFilter: ['data-t10']});
+})();
+"""
+
+# The canvas' drawing buffer as --output reads it: glReadPixels of the default framebuffer (bottom
+# row first), RGBA bytes in base64. The page keeps it (preserveDrawingBuffer).
+READ_PIXELS = r"""
+(() => {
+  const canvas = document.getElementById('canvas');
+  const gl = canvas.getContext('webgl2');
+  if (!gl) return JSON.stringify({error: 'the canvas has no WebGL2 context'});
+  const framebuffer = gl.getParameter(gl.READ_FRAMEBUFFER_BINDING);
+  const packBuffer = gl.getParameter(gl.PIXEL_PACK_BUFFER_BINDING);
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, null);
+  const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+  const pixels = new Uint8Array(w * h * 4);
+  gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  const error = gl.getError();
+  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, framebuffer);
+  gl.bindBuffer(gl.PIXEL_PACK_BUFFER, packBuffer);
+  let text = '';
+  for (let i = 0; i < pixels.length; i += 0x8000) text += String.fromCharCode.apply(null, pixels.subarray(i, i + 0x8000));
+  return JSON.stringify({width: w, height: h, glError: error, data: btoa(text)});
+})()
+"""
+
+PAGE_STATE = r"""JSON.stringify({state: document.body ? document.body.dataset.t10 || '' : '',
+  frames: document.body ? document.body.dataset.t10Frames || '' : '',
+  verdict: document.body ? document.body.dataset.t10Verdict || '' : '',
+  error: (document.getElementById('t10-error') || {}).textContent || '',
+  states: window.__t10States || []})"""
 
 
-class Failure(Exception):
-    pass
+def write_png(path, width, height, rgba_bottom_first):
+    """An 8-bit RGB PNG, top row first, from RGBA rows bottom first (alpha dropped, as --output)."""
+    rows = []
+    stride = width * 4
+    for y in range(height - 1, -1, -1):
+        row = rgba_bottom_first[y * stride:(y + 1) * stride]
+        rgb = bytearray(width * 3)
+        rgb[0::3], rgb[1::3], rgb[2::3] = row[0::4], row[1::4], row[2::4]
+        rows.append(b"\0" + bytes(rgb))
+
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
+
+    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)) +
+           chunk(b"IDAT", zlib.compress(b"".join(rows), 6)) + chunk(b"IEND", b""))
+    with open(path + ".tmp", "wb") as f:
+        f.write(png)
+    os.replace(path + ".tmp", path)
 
 
-class _Handler(http.server.SimpleHTTPRequestHandler):
-    # WebAssembly streams only with its own MIME type; Python's table may lack it.
-    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm"}
+class StagePage:
+    """One Chromium with one tab (size: its viewport) on a local server over `root` (out/web);
+    scripts run before each page's own. Ends with close()."""
 
-    def log_message(self, fmt, *args):
-        pass
-
-
-def serve(root, port=0):
-    """A static server of `root` on 127.0.0.1 (port 0: a free one), in a daemon thread."""
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", port), functools.partial(_Handler, directory=root))
-    server.daemon_threads = True
-    threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.1}, daemon=True).start()
-    return server
-
-
-def find_chromium():
-    for name in ("chromium", "chromium-browser", "google-chrome"):
-        path = shutil.which(name)
-        if path:
-            return path
-    return None
-
-
-class Browser:
-    """Headless Chromium with WebGL 2 on SwiftShader, spoken to over the DevTools pipe."""
-
-    def __init__(self, chromium, profile, log_path, width=1280, height=900):
-        to_r, self._to = os.pipe()
-        self._from, from_w = os.pipe()
-
-        def child_fds():  # Chromium reads commands on fd 3 and writes replies on fd 4
-            a, b = os.dup(to_r), os.dup(from_w)
-            os.dup2(a, 3)
-            os.dup2(b, 4)
-
-        self._log = open(log_path, "w")
-        args = [chromium, "--headless=new", "--no-sandbox", "--remote-debugging-pipe",
-                "--enable-unsafe-swiftshader", "--use-angle=swiftshader", "--ignore-gpu-blocklist",
-                f"--user-data-dir={profile}", "--no-first-run", "--no-default-browser-check",
-                "--disable-extensions", "--disable-background-networking", "--disable-component-update",
-                "--disable-sync", "--disable-default-apps", "--disable-dev-shm-usage", "--mute-audio",
-                "--force-device-scale-factor=1", f"--window-size={width},{height}",
-                "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1"]
-        args += os.environ.get("T10_CHROMIUM_FLAGS", "").split() + ["about:blank"]
-        # Its own process group, so that it and its helpers end together (close()).
-        self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=self._log, stderr=self._log,
-                                     preexec_fn=child_fds, close_fds=False, start_new_session=True)
-        os.close(to_r)
-        os.close(from_w)
-        self._buffer = b""
-        self._id = 0
-        self._messages = []
-
-    def _read(self, timeout):
-        ready, _, _ = select.select([self._from], [], [], timeout)
-        if not ready:
-            return
-        chunk = os.read(self._from, 1 << 20)
-        if not chunk:
-            raise Failure(f"chromium closed the DevTools pipe (exit code {self.proc.poll()})")
-        self._buffer += chunk
-        while b"\0" in self._buffer:
-            raw, self._buffer = self._buffer.split(b"\0", 1)
-            self._messages.append(json.loads(raw))
-
-    def send(self, method, params=None, session=None, timeout=60):
-        self._id += 1
-        message = {"id": self._id, "method": method, "params": params or {}}
-        if session:
-            message["sessionId"] = session
-        data = json.dumps(message).encode() + b"\0"
-        while data:
-            data = data[os.write(self._to, data):]
-        end = time.monotonic() + timeout
-        while time.monotonic() < end:
-            for i, reply in enumerate(self._messages):
-                if reply.get("id") == self._id:
-                    del self._messages[i]
-                    if "error" in reply:
-                        raise Failure(f"{method}: {reply['error']}")
-                    return reply.get("result", {})
-            self._read(0.1)
-        raise Failure(f"{method}: no reply within {timeout} s")
-
-    def console(self):
-        """The page's console lines and browser log entries (WebGL's warnings) so far."""
-        lines = []
-        for message in self._messages:
-            params = message.get("params", {})
-            if message.get("method") == "Runtime.consoleAPICalled":
-                lines.append(" ".join(str(a.get("value", a.get("description", ""))) for a in params.get("args", [])))
-            elif message.get("method") == "Log.entryAdded":
-                lines.append(params.get("entry", {}).get("text", ""))
-        self._messages = [m for m in self._messages if "id" in m]
-        return lines
+    def __init__(self, root, chromium, log_path, gpu_args, deadline=None, scripts=(), size=(1400, 1000)):
+        self.size = size
+        self._stack = contextlib.ExitStack()
+        try:
+            self.browser, self.base = self._stack.enter_context(
+                cdp.browsing(root, chromium, log_path, deadline, gpu_args, size))
+            _, self.session = cdp.open_tab(self.browser, ("Page", "Runtime", "Log", "Network"), size,
+                                           (WATCH_STATE,) + tuple(scripts))
+        except BaseException:
+            self._stack.close()
+            raise
 
     def close(self):
-        try:
-            if self.proc.poll() is None:
-                try:
-                    self.send("Browser.close", timeout=5)
-                    self.proc.wait(timeout=5)
-                except Exception:
-                    pass
-        finally:
-            for sig in (signal.SIGTERM, signal.SIGKILL):
-                try:
-                    os.killpg(self.proc.pid, sig)
-                except ProcessLookupError:
-                    break
-            self._log.close()
+        self._stack.close()
+
+    def evaluate(self, expression, await_promise=False):
+        return cdp.evaluate(self.browser, self.session, expression, await_promise)
+
+    def state(self):
+        """state (dataset.t10), frames, verdict, error (#t10-error) and states (WATCH_STATE's record)."""
+        return json.loads(self.evaluate(PAGE_STATE))
+
+    def open(self, path):
+        """Opens `path` (below the root, with its query); returns its URL."""
+        url = self.base + path
+        self.browser.send("Page.navigate", {"url": url}, self.session)
+        return url
+
+    def wait(self, done, what, timeout):
+        return cdp.wait_until(self.state, done, timeout, what,
+                              lambda s: f"; the page says state={s['state']!r} frames={s['frames']!r} "
+                                        f"error={s['error']!r}{self.problems()}")
+
+    def settled(self, timeout):
+        return self.wait(lambda s: s["state"] in ("rendered", "error"), "no 'rendered' or 'error'", timeout)
+
+    def problems(self):
+        """Script errors and console errors so far, for a failure message."""
+        found = []
+        for event in self.browser.drain():
+            method, params = event.get("method"), event.get("params", {})
+            if method == "Runtime.exceptionThrown":
+                found.append("script error: " + params["exceptionDetails"].get("exception", {}).get(
+                    "description", params["exceptionDetails"].get("text", "")))
+            elif method == "Log.entryAdded" and params["entry"]["level"] == "error" and \
+                    not params["entry"].get("url", "").endswith("/favicon.ico"):  # Chromium asks for it by itself
+                found.append("console: " + params["entry"].get("text", ""))
+            elif method == "Log.entryAdded" and "WebGL" in params["entry"].get("text", "")[:40]:
+                found.append("WebGL: " + params["entry"].get("text", ""))  # which call a GL error came from
+            elif method == "Runtime.consoleAPICalled" and params.get("type") == "error":
+                found.append("console: " + " ".join(str(a.get("value", a.get("description", "")))
+                                                    for a in params.get("args", [])))
+        return "".join(f"\n  {line[:400]}" for line in found[:10])
+
+    def capture(self, path):
+        """The frame as --output writes it (an RGB PNG at `path`); returns (width, height)."""
+        frame = json.loads(self.evaluate(READ_PIXELS))
+        if "error" in frame:
+            raise Failure(frame["error"])
+        if frame["glError"]:
+            raise Failure(f"gl.readPixels failed: GL error 0x{frame['glError']:04x}")
+        write_png(path, frame["width"], frame["height"], base64.b64decode(frame["data"]))
+        return frame["width"], frame["height"]
+
+    def screenshot(self, path):
+        """The whole page, as a reader scrolling it would see it."""
+        cdp.full_page_screenshot(self.browser, self.session, path, self.size[0], self.size[1])
 
 
-class Page:
-    def __init__(self, browser, url):
-        self.browser = browser
-        target = browser.send("Target.createTarget", {"url": "about:blank"})["targetId"]
-        self.session = browser.send("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
-        browser.send("Runtime.enable", session=self.session)
-        browser.send("Log.enable", session=self.session)
-        browser.send("Page.enable", session=self.session)
-        browser.send("Page.navigate", {"url": url}, session=self.session)
-
-    def eval(self, expression, timeout=60):
-        result = self.browser.send("Runtime.evaluate", {"expression": expression, "awaitPromise": True,
-                                                        "returnByValue": True}, session=self.session,
-                                   timeout=timeout)
-        if "exceptionDetails" in result:
-            raise Failure(f"{expression}: {result['exceptionDetails'].get('exception', {}).get('description')}")
-        return result.get("result", {}).get("value")
-
-    def wait_state(self, timeout, frames_above=-1):
-        """Waits until dataset.t10 is "error", or "rendered" with more than `frames_above` frames."""
-        end = time.monotonic() + timeout
-        while time.monotonic() < end:
-            state = self.eval("document.body ? [document.body.dataset.t10 || '', "
-                              "Number(document.body.dataset.t10Frames || 0)] : ['', 0]")
-            if state[0] == "error" or (state[0] == "rendered" and state[1] > frames_above):
-                return state[0]
-            time.sleep(0.1)
-        raise Failure(f"the page was not rendered within {timeout} s")
+def console_lines(events):
+    """The page's console lines and the browser's log entries (WebGL's warnings) among `events`."""
+    lines = []
+    for event in events:
+        params = event.get("params", {})
+        if event.get("method") == "Runtime.consoleAPICalled":
+            lines.append(" ".join(str(a.get("value", a.get("description", ""))) for a in params.get("args", [])))
+        elif event.get("method") == "Log.entryAdded":
+            lines.append(params.get("entry", {}).get("text", ""))
+    return lines
 
 
 def render_page(root, page, evals=(), png=None, timeout=120, chromium=None):
     """Serves `root`, loads `page` and returns the page's report (see the module's text)."""
-    chromium = chromium or find_chromium()
+    chromium = chromium or cdp.find_chromium()
     if not chromium:
         raise Failure("no chromium found (Debian package chromium)")
-    server = serve(root)
-    profile = tempfile.mkdtemp(prefix="t10-web-")
-    browser = Browser(chromium, profile, os.path.join(profile, "chromium.log"))
-    try:
-        started = time.monotonic()
-        page_ = Page(browser, f"http://127.0.0.1:{server.server_address[1]}/{page}")
-        state = page_.wait_state(timeout)
-        report = {"state": state, "wallMs": round((time.monotonic() - started) * 1000)}
-        results = []
-        for expression in evals:
-            if state != "rendered":
-                break
-            frames = page_.eval("Number(document.body.dataset.t10Frames)")
-            value = page_.eval(expression)
-            results.append(value)
-            # A setting applied redraws: wait for the frame after it.
-            if page_.eval("document.body.dataset.t10") != "rendered":
-                state = page_.wait_state(timeout, frames)
-        report["state"] = state
-        report["evals"] = results
-        report["error"] = page_.eval("(document.getElementById('t10-error') || {}).textContent || ''")
-        report["frames"] = page_.eval("Number(document.body.dataset.t10Frames || 0)")
-        report["firstFrameMs"] = page_.eval("window.Module && Module.t10FirstFrameMs")
-        report["console"] = browser.console()
-        if png and state == "rendered":
-            data = page_.eval("document.getElementById('canvas').toDataURL('image/png')")
-            with open(png, "wb") as out:
-                out.write(base64.b64decode(data.split(",", 1)[1]))
-        return report
-    finally:
-        browser.close()
-        server.shutdown()
-        shutil.rmtree(profile, ignore_errors=True)
+    gpu_args = cdp.RENDERERS["swiftshader"] + ("--ignore-gpu-blocklist",) + tuple(
+        os.environ.get("T10_CHROMIUM_FLAGS", "").split())
+
+    def drawn(frames_above):  # "error", or "rendered" with more than frames_above frames
+        return lambda s: s["state"] == "error" or (s["state"] == "rendered" and int(s["frames"] or 0) > frames_above)
+
+    with tempfile.TemporaryDirectory(prefix="t10-web-") as scratch:
+        tab = StagePage(root, chromium, os.path.join(scratch, "chromium.log"), gpu_args, size=(1280, 900))
+        try:
+            started = time.monotonic()
+            tab.open(page)
+            state = tab.wait(drawn(-1), "the page was not rendered", timeout)
+            report = {"wallMs": round((time.monotonic() - started) * 1000)}
+            results = []
+            for expression in evals:
+                if state["state"] != "rendered":
+                    break
+                frames = int(tab.state()["frames"] or 0)
+                results.append(tab.evaluate(expression, await_promise=True))
+                # A setting applied redraws: wait for the frame after it.
+                if tab.state()["state"] != "rendered":
+                    state = tab.wait(drawn(frames), "the page was not rendered", timeout)
+            final = tab.state()
+            report.update(state=state["state"], evals=results, error=final["error"],
+                          frames=int(final["frames"] or 0),
+                          firstFrameMs=tab.evaluate("window.Module && Module.t10FirstFrameMs"),
+                          console=console_lines(tab.browser.drain()))
+            if png and state["state"] == "rendered":
+                tab.capture(png)
+            return report
+        finally:
+            tab.close()
 
 
 def serve_forever(root, port):
     """make web-serve: the static server alone, until Ctrl-C."""
     try:
-        server = serve(root, port)
+        server = cdp.start_server(root, port)
     except OSError as error:
         print(f"127.0.0.1:{port}: {error.strerror} (WEB_PORT=N picks another port)", file=sys.stderr)
         return 1
@@ -241,7 +241,7 @@ def main():
     parser.add_argument("--root", help="the folder to serve (out/web)")
     parser.add_argument("--page", help="the page under --root, with its query")
     parser.add_argument("--eval", action="append", default=[], help="a JavaScript expression to run once rendered")
-    parser.add_argument("--png", help="write the canvas here once rendered")
+    parser.add_argument("--png", help="write the frame here once rendered")
     parser.add_argument("--timeout", type=float, default=120, help="seconds to wait for each state (default 120)")
     args = parser.parse_args()
     if args.serve:
