@@ -234,21 +234,30 @@ void killAllOfUid(uid_t uid) {
 
 namespace {
 
-// The first line of bwrap --version ("bubblewrap 0.6.1"), or "bubblewrap (its version unknown)".
-std::string bwrapVersion() {
+// Runs argv as `run` says, its output collected in a temporary file (removed after), into `result`;
+// returns why it could not run at all ("" when it ran, whatever its exit).
+std::string probeRun(const SandboxRun& run, const std::vector<std::string>& argv, RunResult& result) {
     char name[] = "/tmp/t10-grade-probe.XXXXXX";
     const int fd = ::mkstemp(name);
-    if (fd < 0) return "bubblewrap (its version unknown)";
+    if (fd < 0) return std::string("mkstemp: ") + std::strerror(errno);
     ::close(fd);
-    SandboxRun run; // isolation none: bwrap itself, asked only its version
-    run.limits.wallSeconds = 10;
-    std::string version;
+    std::string error;
     try {
-        const RunResult result = runSandboxed(run, {kBwrap, "--version"}, name);
-        if (result.ok()) version = result.output.substr(0, result.output.find('\n'));
-    } catch (const Error&) {
+        result = runSandboxed(run, argv, name);
+    } catch (const Error& e) {
+        error = e.what();
     }
     ::unlink(name);
+    return error;
+}
+
+// The first line of bwrap --version ("bubblewrap 0.6.1"), or "bubblewrap (its version unknown)".
+std::string bwrapVersion() {
+    SandboxRun run; // isolation none: bwrap itself, asked only its version
+    run.limits.wallSeconds = 10;
+    RunResult result;
+    const bool ran = probeRun(run, {kBwrap, "--version"}, result).empty() && result.ok();
+    const std::string version = ran ? result.output.substr(0, result.output.find('\n')) : "";
     return version.empty() ? "bubblewrap (its version unknown)" : version;
 }
 
@@ -260,18 +269,8 @@ std::string probeNamespaces(uid_t uid) {
     run.isolation = Isolation::Namespaces;
     run.uid = uid;
     run.limits.wallSeconds = 10;
-    char name[] = "/tmp/t10-grade-probe.XXXXXX";
-    const int fd = ::mkstemp(name);
-    if (fd < 0) return std::string("mkstemp: ") + std::strerror(errno);
-    ::close(fd);
     RunResult result;
-    try {
-        result = runSandboxed(run, {"/usr/bin/true"}, name);
-    } catch (const Error& error) {
-        ::unlink(name);
-        return error.what();
-    }
-    ::unlink(name);
+    if (const std::string error = probeRun(run, {"/usr/bin/true"}, result); !error.empty()) return error;
     if (result.ok()) return "";
     // bubblewrap before 0.8 knows no --size (0.4 no --clearenv either): the namespaces are there, the
     // program is too old for the sandbox's options. Say so rather than blame the kernel.
@@ -291,19 +290,10 @@ std::string probeOwnProcessLimit() {
     run.ownProcessLimit = true;
     run.limits.processes = 2; // the shell and its child; bwrap's pid 1 is added
     run.limits.wallSeconds = 10;
-    char name[] = "/tmp/t10-grade-probe.XXXXXX";
-    const int fd = ::mkstemp(name);
-    if (fd < 0) return std::string("mkstemp: ") + std::strerror(errno);
-    ::close(fd);
     RunResult result;
-    try {
-        // Counted with the user's processes outside the namespace (the grader, bwrap), the fork fails.
-        result = runSandboxed(run, {"/bin/sh", "-c", "/usr/bin/true & wait"}, name);
-    } catch (const Error& error) {
-        ::unlink(name);
-        return error.what();
-    }
-    ::unlink(name);
+    // Counted with the user's processes outside the namespace (the grader, bwrap), the fork fails.
+    if (const std::string error = probeRun(run, {"/bin/sh", "-c", "/usr/bin/true & wait"}, result); !error.empty())
+        return error;
     if (result.ok()) return "";
     std::string output = result.output.substr(0, result.output.find('\n'));
     return "this kernel counts the user's processes together across its user namespaces (Linux before 5.14): a "
