@@ -142,6 +142,7 @@ void rebuildDiagnosis(Check& check) {
     check.blame.clear();
     if (check.mistakes.empty()) {
         check.diagnosis = check.unexplained;
+        check.blame = check.unexplainedBlame;
         return;
     }
     check.diagnosis = check.mistakes.size() > 1 ? "one of: " : "";
@@ -151,6 +152,24 @@ void rebuildDiagnosis(Check& check) {
             if (std::find(check.blame.begin(), check.blame.end(), step) == check.blame.end()) check.blame.push_back(step);
     }
     std::sort(check.blame.begin(), check.blame.end());
+}
+
+// A failure no catalogue mistake explains (no findings, or crossCheckCases dropped them) is one
+// mistake the grader cannot place among the check's steps: it costs one step, `step` (the one whose
+// arithmetic makes the buffer), not all of them, so that one wrong constant nobody modelled costs less
+// than steps not done (issue 38). Steps not done show as such (nothing written, or `lookMissing`: the
+// steps of a "-missing" model the buffer is nearer to than to the tutorial's) and keep their cost.
+void chargeOneStep(Check& check, const std::string& what, int step, const std::vector<int>& lookMissing = {}) {
+    std::set<int> charged(lookMissing.begin(), lookMissing.end());
+    charged.insert(step);
+    check.unexplainedBlame.assign(charged.begin(), charged.end());
+    check.unexplained = what + "; it costs " +
+                        (lookMissing.empty() ? "one step, step " + std::to_string(step) + ": one mistake that no model places among " +
+                                                   stepRange(check.steps)
+                                             : stepRange(check.unexplainedBlame) + ": it is nearer to " + stepRange(lookMissing) +
+                                                   " not done than to the tutorial's, and step " + std::to_string(step) +
+                                                   " for what else is wrong");
+    rebuildDiagnosis(check);
 }
 
 // Keeps only the findings `keep` accepts (all of them if it accepts none) and rewrites the
@@ -939,8 +958,8 @@ bool luminanceLevelsCheck(CaseState& state, const CheckSpec&, Check& check) {
                       ": fewer levels never reach the 1x1 average, more cannot be allocated";
     if (!check.passed) {
         if (levels == int(std::ceil(std::log2(side)))) name(check, "ceil-log2-levels", {13});
-        else check.diagnosis = levels == 0 ? "no luminance texture on unit 16 (steps 12-13)"
-                                           : "the luminance texture does not have the full mip chain (step 13)";
+        else if (levels == 0) check.diagnosis = "no luminance texture on unit 16 (steps 12-13)";
+        else chargeOneStep(check, "the luminance texture does not have the full mip chain", 13);
     }
     return true;
 }
@@ -1000,6 +1019,8 @@ bool logLuminanceCheck(CaseState& state, const CheckSpec&, Check& check) {
         check.diagnosis = "luminance level 0 is the first buffer that goes wrong, and no catalogue mistake "
                           "explains it" + (shape.empty() ? std::string() : ": " + shape) +
                           "; check the luminance, log and range mapping of PostProcessInit.frag (steps 3-5)";
+        // Nothing written is steps 3-5 not done; anything else is one mistake in one of them.
+        if (shape.rfind("nothing written", 0) != 0) chargeOneStep(check, check.diagnosis, 5);
     }
     return true;
 }
@@ -1101,8 +1122,8 @@ bool bloomDownsampleCheck(CaseState& state, const CheckSpec&, Check& check) {
                            : "<= 64 steps: odd sizes are filtered as the driver likes";
     if (!check.passed) {
         if (allZero(state.bloom1) && !allZero(state.bloom0)) name(check, "bloom-level1-missing", {24});
-        else check.diagnosis = "bloom level 1 is the first buffer that goes wrong, and it is not the 2x2 average "
-                               "of level 0: check glGenerateMipmap on unit 17 (step 24)";
+        else chargeOneStep(check, "bloom level 1 is the first buffer that goes wrong, and it is not the 2x2 average "
+                                  "of level 0: check glGenerateMipmap on unit 17", 24);
     }
     return true;
 }
@@ -1280,6 +1301,35 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
     }
 }
 
+// The steps of the frame's "-missing" models (no tone map, no bloom) that the submission's frame is
+// nearer to than to the tutorial's, up to a gain: over the channels where the two frames differ by more
+// than a step, the frame is closer in direction (cosine) to the model's than to the tutorial's. Steps
+// that look not done then cost their points even where something else is wrong too (no bloom and
+// another mistake: no one model names it), while a wrong constant, which mostly scales the tone map's
+// output, stays nearer the tutorial's frame (a darker frame is not a frame without its bloom).
+std::vector<int> lookMissing(const CaseState& state, const FrameInputs& inputs, const Image8& expected) {
+    const Image8& got = state.dump.frame;
+    std::set<int> steps;
+    for (const DiscreteModel& d : frameDiscreteModels(state.part, 0)) {
+        if (!endsWith(d.id, "-missing")) continue;
+        const Image8 missing = ref::finalFrame(inputs, d.model);
+        double gt = 0.0, tt = 0.0, gm = 0.0, mm = 0.0;
+        for (int y = 0; y < got.height; ++y)
+            for (int x = 0; x < got.width; ++x)
+                for (int k = 0; k < 3; ++k) {
+                    const double e = expected.at(x, y, k), m = missing.at(x, y, k), g = got.at(x, y, k);
+                    if (std::abs(e - m) <= 1.0) continue;
+                    gt += g * e;
+                    tt += e * e;
+                    gm += g * m;
+                    mm += m * m;
+                }
+        // cos(got, missing) > cos(got, tutorial), both >= 0 for 8-bit values; a black model is no match.
+        if (mm > 0.0 && tt > 0.0 && gm * gm * tt > gt * gt * mm) steps.insert(d.steps.begin(), d.steps.end());
+    }
+    return {steps.begin(), steps.end()};
+}
+
 // The final frame (steps 6-10, 19-20, 35): the CPU tone map of the GPU's own buffers. The GPU
 // evaluates in float, the reference in double from the same read-back buffers: a channel lands one
 // step away only next to a rounding boundary, so at most 1 step and rarely.
@@ -1301,8 +1351,7 @@ bool frameCheck(CaseState& state, const CheckSpec& spec, Check& check) {
         inherit(check, levels, "the final pass reads the key from a level that is not 1x1");
     } else {
         nameFrameMistakes(state, bloom, check);
-        check.unexplained = describeFrame(expected, state.dump.frame);
-        rebuildDiagnosis(check);
+        chargeOneStep(check, describeFrame(expected, state.dump.frame), 9, lookMissing(state, inputs, expected));
     }
     return true;
 }

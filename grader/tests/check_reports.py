@@ -9,8 +9,10 @@
 For a known mistake the check that guards its step must fail, name the mistake's catalogue id in
 its diagnosis and cover the step; the score must drop. For the fitted batch (make_submissions.FITTED)
 the mistake must be named with its value measured within 10 % and nothing else named; mistakes
-outside the catalogue (OUTSIDE) must fail with nothing named; Part 1 with steps 6-10 missing must
-score lower than Part 1 with one wrong constant. Every id named must be in mistakes.tsv, every
+outside the catalogue (OUTSIDE) and the unnamed constants (UNNAMED_ONLY) must fail with nothing
+named; Part 1 with steps 6-10 missing must score lower than Part 1 with one wrong constant, and the
+comparisons of make_submissions.FAIR must hold (one wrong constant, named or not, above whole steps
+missing; one change never below the same change with steps missing). Every id named must be in mistakes.tsv, every
 finding of a parameter must carry its estimate. Exit 0 when all hold, 1 otherwise."""
 import csv
 import json
@@ -19,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_submissions import FITTED, OUTSIDE, OUTSIDE2  # noqa: E402  (one table of the values set)
+from make_submissions import FAIR, FITTED, OUTSIDE, OUTSIDE2, UNNAMED, UNNAMED_ONLY  # noqa: E402  (one table of the values set)
 
 CATALOGUE_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "diagnosis", "mistakes.tsv")
 
@@ -76,6 +78,11 @@ for _name, (_id, _parameter, _value, _file, _changes) in FITTED.items():
     EXPECTED[_name] = ("graded", [])
 for _name in list(OUTSIDE) + list(OUTSIDE2):
     EXPECTED[_name] = ("graded", [])
+# Fairness named or not: only their scores are compared (FAIR); the unnamed constants must name nothing.
+for _table in UNNAMED.values():
+    for _name in _table:
+        EXPECTED[_name] = ("graded", None)
+EXPECTED["p2_bloom_missing"] = ("graded", [("pot.frame", "bloom-missing", 19), ("pot.frame", "bloom-missing", 20)])
 # Values the older fixtures set, checked as the fitted batch is.
 FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-threshold", 2.5),
                   "weight": ("bloom-weight", 0.5), "tap": ("blur-tap-inner", 0.424), "sigma": ("blur-sigma", 2.0),
@@ -155,7 +162,7 @@ def check_findings(name, report, fail):
             values = sorted({json.dumps(v) for _, v in mine})
             print(f"{name}: [{mistake_id}] set {value}, measured {', '.join(values)} in {len(mine)} checks; "
                   f"score {report['score']}, failed steps {report['failed_steps']}")
-    if name in OUTSIDE or name in OUTSIDE2:
+    if name in OUTSIDE or name in OUTSIDE2 or name in UNNAMED_ONLY:
         if named:
             fail(f"a mistake outside the catalogue got names: {named}")
         elif report["score"] >= 100:
@@ -229,7 +236,7 @@ def check_report(report_dir, name, errors):
         return
     if failures is None:
         if report["score"] >= 100:
-            fail("score 100 with two mistakes")
+            fail("score 100 for a submission with a mistake")
         else:
             print(f"{name}: score {report['score']}")
         return
@@ -267,6 +274,25 @@ def compare_part1(report_dir, names, errors):
                           f"constant's {scores[name]} ({name})")
         else:
             print(f"Part 1: steps 6-10 missing scores {scores['p1_steps_missing']}, one wrong constant ({name}) {scores[name]}")
+
+
+def compare_fair(report_dir, names, errors):
+    """make_submissions.FAIR's comparisons whose two submissions are both in this batch: the higher
+    scores above the lower (strict) or never below it."""
+    for part, higher, lower, strict in FAIR:
+        if higher not in names or lower not in names:
+            continue
+        scores = {}
+        for name in (higher, lower):
+            with open(os.path.join(report_dir, name, "report.json"), encoding="utf-8") as f:
+                scores[name] = json.load(f)["score"]
+        holds = scores[higher] > scores[lower] if strict else scores[higher] >= scores[lower]
+        relation = "above" if strict else "at least"
+        line = f"Part {part}: {higher} scores {scores[higher]}, {lower} {scores[lower]} (must be {relation})"
+        if holds:
+            print(line)
+        else:
+            errors.append(line)
 
 
 def compare_scores(report_dir, one_change, with_step_missing, errors):
@@ -365,6 +391,7 @@ def main():
             check_report(sys.argv[2], name, errors)
         if "p2_one_change" in sys.argv[3:] and "p2_change_and_step_missing" in sys.argv[3:]:
             compare_scores(sys.argv[2], "p2_one_change", "p2_change_and_step_missing", errors)
+        compare_fair(sys.argv[2], sys.argv[3:], errors)
         constants = [n for n in ("p1_one_constant", "p1_middle_grey_1_0") if n in sys.argv[3:]]
         if "p1_steps_missing" in sys.argv[3:] and constants:
             compare_part1(sys.argv[2], constants, errors)

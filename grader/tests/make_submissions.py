@@ -5,7 +5,8 @@ catalogue applied to a copy of Part 3, and submissions that do not build, whose 
 compile, that crash and that loop forever. Then the fitted batch (FITTED): every parameter of the
 catalogue at two values the grader's own fixtures above do not use, mistakes outside the catalogue
 (OUTSIDE), and Part 1 with steps 6-10 missing beside Part 1 with one wrong constant (PART1; the
-middle grey 1.0 among them, which issue 38 found unnamed). make grade-sweep (sweep.py) spreads every
+middle grey 1.0 among them, which issue 38 found unnamed), and per part a constant the catalogue does
+not model beside the part with steps missing (UNNAMED, compared as FAIR lists). make grade-sweep (sweep.py) spreads every
 fitted parameter across its fit's range.
 
 Every mistake is one textual change of the current reference file, so it never drifts from it; a
@@ -145,6 +146,39 @@ PART2 = {"equivalent2": ("PostProcess.frag", EQUIVALENT),
          "p2_change_and_step_missing": ("PostProcess.frag", [("const float fYwhite = 0.22f;", "const float fYwhite = 0.25f;"),
                                                              ("v3RetColour = bloom(v3RetColour, v2UV);", "")])}
 
+# Fairness, named or not (issue 38): one wrong constant in a place or form the catalogue does not model
+# (so nothing is named) against the same part with whole steps missing, and against the same constant
+# with steps missing too. FAIR lists the comparisons check_reports.py makes: (part, higher, lower,
+# strict): `higher` scores above `lower` (strict) or never below it. The constants sit in the tone
+# map, so "tone map not applied" makes them irrelevant: that frame is the steps-missing one exactly.
+TONE_MAP_OFF = ("v3ColourOut = toneMap(v3RetColour, v2UV);", "v3ColourOut = v3RetColour;")
+BLOOM_OFF = ("v3RetColour = bloom(v3RetColour, v2UV);", "")
+# The operator's denominator (1 + Yr): the white point fit changes the numerator only.
+DENOMINATOR = ("/ (1.0f + fYr);", "/ (1.5f + fYr);")
+# The 2 in the middle grey's 2 / (2 + log10(Ya + 1)): the middle-grey fit changes the 1.03 only.
+GREY_TWO = ("(2.0f / (2.0f + log10(fYa + 1.0f)))", "(2.0f / (2.5f + log10(fYa + 1.0f)))")
+UNNAMED = {
+    1: {"p1_unnamed_constant": [DENOMINATOR], "p1_unnamed_and_steps_missing": [DENOMINATOR, TONE_MAP_OFF]},
+    2: {"p2_unnamed_constant": [GREY_TWO], "p2_bloom_missing": [BLOOM_OFF],
+        "p2_unnamed_and_tone_map_missing": [GREY_TWO, TONE_MAP_OFF]},
+    3: {"p3_unnamed_constant": [DENOMINATOR], "p3_unnamed_and_tone_map_missing": [DENOMINATOR, TONE_MAP_OFF],
+        "p3_unnamed_and_bloom_missing": [DENOMINATOR, BLOOM_OFF]},
+}
+# The submissions of UNNAMED that carry only the unnamed constant: every check must name nothing.
+UNNAMED_ONLY = {"p1_unnamed_constant", "p2_unnamed_constant", "p3_unnamed_constant"}
+FAIR = [
+    (1, "p1_unnamed_constant", "p1_steps_missing", True),
+    (1, "p1_one_constant", "p1_steps_missing", True),
+    (1, "p1_unnamed_constant", "p1_unnamed_and_steps_missing", False),
+    (2, "p2_unnamed_constant", "p2_bloom_missing", True),
+    (2, "p2_one_change", "p2_bloom_missing", True),
+    (2, "p2_unnamed_constant", "p2_unnamed_and_tone_map_missing", False),
+    (2, "p2_one_change", "p2_change_and_step_missing", False),
+    (3, "p3_unnamed_constant", "p3_unnamed_and_tone_map_missing", True),
+    (3, "p3_unnamed_constant", "p3_unnamed_and_bloom_missing", False),
+    (3, "white_point", "p3_unnamed_and_bloom_missing", True),
+]
+
 
 def write_mutant(source, out, part, name, file, changes):
     with open(os.path.join(source, STAGES[part], file), encoding="utf-8") as f:
@@ -200,6 +234,7 @@ def main():
     batches += [(1, name, file, changes) for name, (file, changes) in PART1.items()]
     batches += [(2, name, file, changes) for name, (file, changes) in PART2.items()]
     batches += [(2, name, file, changes) for name, (file, changes) in OUTSIDE2.items()]
+    batches += [(part, name, "PostProcess.frag", changes) for part, table in UNNAMED.items() for name, changes in table.items()]
     for part, name, file, changes in batches:
         if not write_mutant(source, out, part, name, file, changes):
             return 1

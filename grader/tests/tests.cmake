@@ -2,7 +2,9 @@
 # time from the current reference stages by tests/make_submissions.py: each reference, a
 # shaders-only copy of it and an equivalent rewrite must score 100, each known mistake must fail the
 # check of its step with its diagnosis (and, with a value, the value measured within 10 %), Part 1
-# with steps 6-10 missing must score below Part 1 with one wrong constant, and broken submissions
+# with steps 6-10 missing must score below Part 1 with one wrong constant, each part's constant that
+# no catalogue mistake names must score above the part with whole steps missing and never below the
+# same constant with steps missing too (make_submissions.FAIR; issue 38), and broken submissions
 # must get their status within the time limit. Renders are small
 # (128x128, 160x90, 64x64) and the reference renders and built submissions are cached, so the part 3
 # batch takes a few seconds of CPU per submission. Part 3's per-pass checks (blur-passes,
@@ -29,9 +31,11 @@ set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SET
 
 set(GRADE_PART3 reference3 shaders3 equivalent rec601 white_point threshold weight tap sigma no_unmapping log2_exp black_nan
     bloom_after full_res_offsets ceil_levels swapped_subroutines viewport_reset pass_count
-    no_compile shader_error shader_bytes crash)
-set(GRADE_PART1 reference1 shaders1 equivalent1 p1_steps_missing p1_one_constant p1_middle_grey_1_0)
-set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias p2_one_change p2_change_and_step_missing)
+    no_compile shader_error shader_bytes crash p3_unnamed_constant p3_unnamed_and_tone_map_missing p3_unnamed_and_bloom_missing)
+set(GRADE_PART1 reference1 shaders1 equivalent1 p1_steps_missing p1_one_constant p1_middle_grey_1_0 p1_unnamed_constant
+    p1_unnamed_and_steps_missing)
+set(GRADE_PART2 reference2 shaders2 equivalent2 out_p2_no_mip_bias p2_one_change p2_change_and_step_missing p2_unnamed_constant
+    p2_bloom_missing p2_unnamed_and_tone_map_missing)
 # A sanitized build's submissions are built sanitized too: check_reports.py expects UBSan's report for
 # the crash submission there.
 if(T10_SANITIZE)
