@@ -181,13 +181,7 @@ std::string App::applyWebSettings(const Settings& next) {
 std::string App::webOptions() const {
     CLI::App cli;
     Settings scratch;
-    addContextOptions(cli, scratch.context);
-    addRunOptions(cli, scratch.run);
-    addSceneOptions(cli, scratch.scene);
-    addOutputOptions(cli, scratch.outputs);
-    addViewOptions(cli, scratch.views);
-    addBenchOptions(cli, scratch.bench);
-    if (stage_.addOptions) stage_.addOptions(cli);
+    addSettingsOptions(cli, scratch, stage_.addOptions);
     // The values given so far: the last of each name wins, as on the command line.
     std::map<std::string, std::string> given;
     for (const std::string& arg : webArgs_) {

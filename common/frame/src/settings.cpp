@@ -30,17 +30,20 @@ void addRunOptions(CLI::App& cli, RunSettings& settings) {
     });
 }
 
+void addSettingsOptions(CLI::App& cli, Settings& settings, const AddOptionsHook& stageOptions) {
+    addContextOptions(cli, settings.context);
+    addRunOptions(cli, settings.run);
+    addSceneOptions(cli, settings.scene);
+    addOutputOptions(cli, settings.outputs);
+    addViewOptions(cli, settings.views);
+    addBenchOptions(cli, settings.bench);
+    if (stageOptions) stageOptions(cli);
+}
+
 int parseSettings(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
                   Settings& settings, const AddOptionsHook& stageOptions) {
-    return parseCommandLine(argc, argv, stageName, summary, [&](CLI::App& cli) {
-        addContextOptions(cli, settings.context);
-        addRunOptions(cli, settings.run);
-        addSceneOptions(cli, settings.scene);
-        addOutputOptions(cli, settings.outputs);
-        addViewOptions(cli, settings.views);
-        addBenchOptions(cli, settings.bench);
-        if (stageOptions) stageOptions(cli);
-    });
+    return parseCommandLine(argc, argv, stageName, summary,
+                            [&](CLI::App& cli) { addSettingsOptions(cli, settings, stageOptions); });
 }
 
 } // namespace t10

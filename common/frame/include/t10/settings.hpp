@@ -33,8 +33,12 @@ struct Settings {
 // Adds the "Run" group to `cli`.
 void addRunOptions(CLI::App& cli, RunSettings& settings);
 
-// Parses argv into `settings` with every service's group and the stage's own options (may be
-// empty); returns as t10::parseCommandLine does (-1: go on, 0: help or version, 2: bad usage).
+// Adds every service's group and the stage's own options (may be empty) to `cli`, bound to
+// `settings`: the command line's options, and the list a web page offers (App::webOptions).
+void addSettingsOptions(CLI::App& cli, Settings& settings, const AddOptionsHook& stageOptions = {});
+
+// Parses argv into `settings` with addSettingsOptions' options; returns as t10::parseCommandLine
+// does (-1: go on, 0: help or version, 2: bad usage).
 int parseSettings(int argc, const char* const* argv, const std::string& stageName, const std::string& summary,
                   Settings& settings, const AddOptionsHook& stageOptions = {});
 
