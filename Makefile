@@ -37,9 +37,9 @@ help:
 	@echo "make deps   install the Debian packages the build needs (apt-get, as root or with sudo)"
 	@echo "make configure  configure with CMake into $(BUILD)/ (once)"
 	@echo "make bless  re-record the golden images on purpose (STAGES=\"name ...\" for some)"
-	@echo "make clean  remove $(BUILD)/, build-release/, build-web/ and $(OUT)/"
+	@echo "make clean  remove $(BUILD)/, build-release/, build-web/, build-web-release/ and $(OUT)/"
 	@echo "make views  render every view (--view) of every stage into $(OUT)/views/, with each view's line in views.txt"
-	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one)"
+	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one; WEB_PRESET=web-release: -O3)"
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
@@ -144,7 +144,7 @@ bless: build
 	tests/golden/bless.sh $(BIN) $(if $(filter command line,$(origin STAGES)),$(STAGES),$(shell cat $(BUILD)/golden_stages.txt))
 
 clean:
-	rm -rf $(BUILD) build-release build-web $(OUT)
+	rm -rf $(BUILD) build-release build-web build-web-release $(OUT)
 
 # Exercise 39 measured: post-process GPU time and halo radius for 0-10 blur passes at 1280x720
 # (extras/), timed in a release build (build-release/, the CMake preset of that name): debug code
@@ -159,16 +159,21 @@ bench-passes: deps
 
 # The browser build (issue 36): every stage, or STAGE=name (a student's folder too: student_partN),
 # compiled by Debian's emscripten to WebAssembly + WebGL 2 into $(OUT)/web/<stage>/ (index.html and its
-# .js, .wasm and .data), in build-web/ (the CMake preset `web`; cmake/T10Web.cmake). make web-serve
-# serves $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (loopback only). NODE_PATH: Debian's emscripten
-# runs its JavaScript tools with the system's Node, which finds their modules (acorn) only there.
-WEB_BUILD := build-web
+# .js, .wasm and .data), in build-web/ (the CMake preset `web`, -O1; cmake/T10Web.cmake), or with
+# WEB_PRESET=web-release in build-web-release/ at -O3 (what the published site uses: smaller pages, a
+# longer build). make web-serve serves $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (loopback only).
+# NODE_PATH: Debian's emscripten runs its JavaScript tools with the system's Node, which finds their
+# modules (acorn) only there.
+WEB_PRESET ?= web
+WEB_BUILD := build-$(WEB_PRESET)
 WEB_PORT  ?= 8000
 WEB_ENV   := NODE_PATH=/usr/share/nodejs
 .PHONY: web web-serve
 web: PACKAGES += emscripten
 web: deps
-	@[ -f $(WEB_BUILD)/build.ninja ] || $(WEB_ENV) emcmake cmake --preset web -DT10_WEB_OUTPUT_DIR=$(CURDIR)/$(OUT)/web
+	@case "$(WEB_PRESET)" in web|web-release) ;; \
+	 *) echo "make web: WEB_PRESET=$(WEB_PRESET) is not a web preset (web: -O1, the default; web-release: -O3)"; exit 2;; esac
+	@[ -f $(WEB_BUILD)/build.ninja ] || $(WEB_ENV) emcmake cmake --preset $(WEB_PRESET) -DT10_WEB_OUTPUT_DIR=$(CURDIR)/$(OUT)/web
 	@start=$$(date +%s); \
 	$(WEB_ENV) cmake --build $(WEB_BUILD) -j $(JOBS) $(if $(STAGE),--target $(STAGE)) || exit 1; \
 	echo "make web: built in $$(( $$(date +%s) - start )) s; each page's download (gzip as a server may send it):"; \
