@@ -27,6 +27,7 @@ Exit 0: passed; 1: failed (what and why on stderr); 77: cannot run here (no such
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -136,6 +137,12 @@ def run_live(args, page):
     page.capture(before)
     judge(args, before, args.golden, [])
     name, _, value = args.set.partition("=")
+    # The controls are made from Module.t10Options(): every entry a setting's own name, each once.
+    names = page.evaluate("Module.t10Options().options.map(o => o.name)") or []
+    odd = sorted({n for n in names if not re.fullmatch(r"[a-z][a-z0-9-]*", n) or names.count(n) > 1})
+    if odd or name not in names:
+        raise Failure(f"Module.t10Options() lists {len(names)} options; not setting names or repeated: {odd}; "
+                      f"{name!r} {'listed' if name in names else 'missing'}")
     message = page.evaluate(f"Module.t10Set({json.dumps(name)}, {json.dumps(value)})")
     if message:
         raise Failure(f"Module.t10Set({name!r}, {value!r}) refused: {message}")

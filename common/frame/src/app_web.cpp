@@ -16,6 +16,7 @@
 #include <iostream>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 EM_JS(void, t10PageState, (const char* state, int frames), {
     document.body.dataset.t10Frames = String(frames);
@@ -191,9 +192,11 @@ std::string App::webOptions() const {
     }
     nlohmann::json options = nlohmann::json::array();
     auto describe = [&](const CLI::Option* option, const std::string& group) {
-        // CLI11 names a negated flag "--no-bloom{false}": the option's name is the part before "{".
-        std::string name = option->get_name(false, true).substr(2);
-        name = name.substr(0, name.find('{'));
+        // The option's long name ("no-bloom" for CLI11's "--no-bloom{false}"); a short-only option or
+        // the help flag is not a setting.
+        const std::vector<std::string> longNames = option->get_lnames();
+        if (longNames.empty() || longNames.front() == "help") return;
+        const std::string& name = longNames.front();
         nlohmann::json entry{{"name", name},
                              {"group", group},
                              {"description", option->get_description()},
@@ -203,9 +206,7 @@ std::string App::webOptions() const {
         if (const auto it = given.find(name); it != given.end()) entry["value"] = it->second;
         options.push_back(entry);
     };
-    for (const CLI::Option* option : cli.get_options()) {
-        if (option->get_name(false, true).rfind("--", 0) == 0) describe(option, "");
-    }
+    for (const CLI::Option* option : cli.get_options()) describe(option, "");
     for (const CLI::App* group : cli.get_subcommands({})) {
         for (const CLI::Option* option : group->get_options()) describe(option, group->get_group());
     }
