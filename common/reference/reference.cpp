@@ -250,11 +250,11 @@ Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double scene
     return out;
 }
 
-void colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey, std::vector<Rgb>& out) {
-    out.resize(std::size_t(in.accumulation.width) * in.accumulation.height);
-    std::size_t i = 0;
-    for (int y = 0; y < in.accumulation.height; ++y)
-        for (int x = 0; x < in.accumulation.width; ++x) out[i++] = frameColour(in, variant, sceneKey, x, y);
+void colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey, std::vector<Rgb>& out, int step = 1) {
+    const int w = in.accumulation.width;
+    out.resize(std::size_t(w) * in.accumulation.height);
+    for (int y = 0; y < in.accumulation.height; y += step)
+        for (int x = 0; x < w; x += step) out[std::size_t(y) * w + x] = frameColour(in, variant, sceneKey, x, y);
 }
 
 std::vector<Rgb> colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey) {
@@ -277,8 +277,8 @@ std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& var
     return colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap));
 }
 
-void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out) {
-    colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap), out);
+void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out, int step) {
+    colours(inputs, variant, keyFromMapped(inputs.mappedKey, variant.settings, variant.unmap), out, std::max(1, step));
 }
 
 Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant) {

@@ -140,8 +140,10 @@ struct FrameInputs {
 
 // Every pixel's colour under the variant before the 8-bit store, row by row (x fastest).
 std::vector<Rgb> frameColours(const FrameInputs& inputs, const FrameVariant& variant);
-// The same into `out`, whose memory is reused: for fits that evaluate hundreds of variants.
-void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out);
+// The same into `out`, whose memory is reused: for fits that evaluate hundreds of variants. With
+// `step` > 1 only the pixels of every step-th row and column (x % step == 0, y % step == 0) are
+// computed, the others left as they were: a fit's rough search, which looks for a neighbourhood.
+void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::vector<Rgb>& out, int step = 1);
 // The frame under the variant, converted to 8 bits: finalFrame's result for the default variant.
 Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant);
 

@@ -12,7 +12,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
-#include <thread>
 #include <unistd.h>
 
 namespace t10::grade {
@@ -105,7 +104,6 @@ RunResult runCase(const SandboxRun& base, const fs::path& program, const std::st
                   const fs::path& work, const fs::path& dir, const std::vector<std::string>& args, bool capturePasses,
                   const std::string& logFile) {
     const bool namespaces = base.isolation == Isolation::Namespaces;
-    const unsigned threads = std::max(1u, std::min(8u, std::thread::hardware_concurrency()));
     const std::string tmp = (work / "tmp").string();
     SandboxRun run = base;
     run.mounts.push_back({program.string(), "/t10/bin/student", false});
@@ -114,9 +112,9 @@ RunResult runCase(const SandboxRun& base, const fs::path& program, const std::st
     run.mounts.push_back({(work / "mesa-cache").string(), "/mesa-cache", true});
     run.mounts.push_back({dir.string(), "/out", true});
     run.workingDirectory = "/out";
-    // llvmpipe's threads are counted by the process limit: a fixed number, whatever the machine.
-    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "LP_NUM_THREADS=" + std::to_string(threads),
-               "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"), "HOME=" + (namespaces ? std::string("/tmp") : tmp),
+    // llvmpipe draws in the program's thread (kLlvmpipeSmallRenders): no threads of its own to count.
+    run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"),
+               "HOME=" + (namespaces ? std::string("/tmp") : tmp),
                "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
     run.env.insert(run.env.end(), kLlvmpipeSmallRenders.begin(), kLlvmpipeSmallRenders.end());
     std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};

@@ -377,18 +377,24 @@ using ref::FrameInputs;
 // What the fits minimise: the mean distance, in 8-bit steps, from the model's unrounded output to
 // the frame. Unlike the rounded error it changes smoothly with a constant, so the search does not
 // stall on the plateaus of the 8-bit store.
-// `colours` is scratch memory the fits reuse from one evaluation to the next.
-double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame, std::vector<ref::Rgb>& colours) {
-    ref::frameColours(in, model, colours);
+// `colours` is scratch memory the fits reuse from one evaluation to the next. The rough stage reads
+// every kRoughFrameStep-th pixel of every kRoughFrameStep-th row (a quarter of the frame): it looks for
+// the neighbourhood of the value, which every pixel the constant touches points to alike; the second
+// stage and the tolerance read every pixel.
+constexpr int kRoughFrameStep = 2;
+double frameResidual(const FrameInputs& in, const FrameModel& model, const Image8& frame, std::vector<ref::Rgb>& colours,
+                     int step = 1) {
+    ref::frameColours(in, model, colours, step);
     const int w = in.accumulation.width;
     double sum = 0.0;
-    for (int y = 0; y < in.accumulation.height; ++y)
-        for (int x = 0; x < w; ++x)
+    std::size_t count = 0;
+    for (int y = 0; y < in.accumulation.height; y += step)
+        for (int x = 0; x < w; x += step, ++count)
             for (int k = 0; k < 3; ++k) {
                 const double d = std::abs(std::clamp(colours[std::size_t(y) * w + x][k], 0.0, 1.0) * 255.0 - frame.at(x, y, k));
                 sum += std::isfinite(d) ? d : 255.0;
             }
-    return sum / (3.0 * in.accumulation.width * in.accumulation.height);
+    return sum / (3.0 * double(count));
 }
 
 // A frame fit's golden-section steps (every step renders the frame on the CPU again), each narrowing
@@ -751,7 +757,7 @@ void fitFrameConstantJointly(const ModelParameter& p, const std::vector<Check*>&
     const Fit rough = fitParameter(
         [&](double v) {
             double sum = 0.0;
-            for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame, scratch);
+            for (const auto& c : cases) sum += frameResidual(*c->inputs, model(v), c->run.dump.frame, scratch, kRoughFrameStep);
             return sum;
         },
         *std::min_element(values.begin(), values.end()) * 0.5, *std::max_element(values.begin(), values.end()) * 2.0, true, 12,
@@ -1290,8 +1296,8 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
     for (const ModelParameter& p : kFrameParameters) {
         if (state.part < p.firstPart) continue;
         const auto model = [&p](double v) { return withSetting(p.field, v); };
-        const Fit rough = fitParameter([&](double v) { return frameResidual(withLevels, model(v), state.dump.frame, scratch); },
-                                       p.low, p.high, true, 16, kRoughFrameFitSteps, kFrameFitStarts, kFrameResidualCeiling);
+        const auto residual = [&](double v) { return frameResidual(withLevels, model(v), state.dump.frame, scratch, kRoughFrameStep); };
+        const Fit rough = fitParameter(residual, p.low, p.high, true, 16, kRoughFrameFitSteps, kFrameFitStarts, kFrameResidualCeiling);
         if (rough.error > kFrameResidualCeiling) continue;
         const Fit fit = refineFrameFit(rough.value, [&](double v) {
             const auto e = frameError(model(v));

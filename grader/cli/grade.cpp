@@ -40,6 +40,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -179,16 +180,19 @@ Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(confi
     if (!jobUids_.empty()) stageUnreachableMounts(projectMounts_, (workRoot_ / "project").string(), jobUids_.front(), isolation_);
     publicInputs_ = workRoot_ / "inputs";
     inputsDir_ = prepareInputs(config_.cacheDir, publicInputs_);
-    referenceDir_ = renderReference(referenceBinary_, info_.stage, info_.shaders, referenceStageDir(), config_.cacheDir,
-                                    inputsDir_, config_.part);
     // The reference host code (for submissions without Tutorial10.cpp) is built once here rather than
-    // by each of the parallel jobs.
+    // by each of the parallel jobs, while the reference renders its cases: the two are independent and
+    // each keeps one core busy (on a fresh cache they are most of a part's start).
     const fs::path work = workRoot_ / "reference-host";
     makeDir(work, 0, 0755);
     // Built from a copy in the work folder, like a submission: the job's uid may not reach the checkout.
     copyFile(referenceStageDir() + "/Tutorial10.cpp", work / "Tutorial10.cpp", 0644);
     std::string log;
-    if (build((work / "Tutorial10.cpp").string(), 0, work, log).empty()) {
+    // The future waits for the build in its destructor, also when the reference throws.
+    std::future<std::string> host = std::async(std::launch::async, [&] { return build((work / "Tutorial10.cpp").string(), 0, work, log); });
+    referenceDir_ = renderReference(referenceBinary_, info_.stage, info_.shaders, referenceStageDir(), config_.cacheDir,
+                                    inputsDir_, config_.part);
+    if (host.get().empty()) {
         throw Error("the reference " + std::string(info_.stage) + "/Tutorial10.cpp does not build in the sandbox:\n" + log);
     }
 }

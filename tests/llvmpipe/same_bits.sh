@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make test runs llvmpipe without LLVM's optimisation passes (GALLIVM_PERF=nopt) and the grader renders
-# its small cases that way and with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128): for small frames
+# its small cases that way, with 128-bit vectors (LP_NATIVE_VECTOR_WIDTH=128) and in the program's own
+# thread (LP_NUM_THREADS=0): for small frames
 # compiling the shaders costs more CPU than drawing them. That is only right while the results are the
 # same bits: this renders Part 3 (frame, every dumped buffer, every captured blur pass) the default way
 # and both of those, with Mesa's shader cache off so that no way can load another's compiled shaders,
@@ -16,13 +17,13 @@ render() { # render DIR ENV_SETTINGS... -- ARGS...
     while [ "$1" != -- ]; do settings+=("$1"); shift; done
     shift
     mkdir -p "$dir"
-    env -u GALLIVM_PERF -u LP_NATIVE_VECTOR_WIDTH MESA_SHADER_CACHE_DISABLE=true "${settings[@]}" "$stage" --headless --backend egl \
+    env -u GALLIVM_PERF -u LP_NATIVE_VECTOR_WIDTH -u LP_NUM_THREADS MESA_SHADER_CACHE_DISABLE=true "${settings[@]}" "$stage" --headless --backend egl \
         --frames 1 --size 128x128 --dump "$dir" --output "$dir/frame.png" "$@" >"$dir.log" 2>&1 ||
         { echo "FAIL: render into $dir (${settings[*]}) exited non-zero:"; cat "$dir.log"; exit 1; }
 }
 render "$out/default" -- --camera default --capture-passes "$out/default"
 render "$out/nopt" GALLIVM_PERF=nopt -- --camera default --capture-passes "$out/nopt"
-render "$out/grader" GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 -- --camera default --capture-passes "$out/grader"
+render "$out/grader" GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 LP_NUM_THREADS=0 -- --camera default --capture-passes "$out/grader"
 render "$out/other" -- --camera lights
 files=0 differ=0
 while IFS= read -r name; do
@@ -35,4 +36,4 @@ done < <(cd "$out/default" && find . -type f | sort)
 [ "$files" -ge 20 ] || { echo "FAIL: only $files files to compare"; exit 1; }
 cmp -s "$out/default/frame.png" "$out/other/frame.png" && { echo "FAIL: another camera gave the same frame: the comparison sees nothing"; exit 1; }
 [ "$differ" -eq 0 ] || exit 1
-echo "$files files (frame, buffers, blur passes) identical by default, with GALLIVM_PERF=nopt, and with it and LP_NATIVE_VECTOR_WIDTH=128"
+echo "$files files (frame, buffers, blur passes) identical by default, with GALLIVM_PERF=nopt, and with it, LP_NATIVE_VECTOR_WIDTH=128 and LP_NUM_THREADS=0"
