@@ -35,7 +35,6 @@ constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 constexpr const char* kLightsPunctual = "KHR_lights_punctual";
 // Extensions this loader implements; a file that REQUIRES any other is refused by name.
 const std::set<std::string> kSupportedExtensions{kParallaxExtension, kEmissiveStrength, kLightsPunctual};
-constexpr std::size_t kMaxLights = 8; // the size of Scene.frag's Lights arrays
 
 // A fault in the file: caught at the top and prefixed with the file name.
 struct Fault {
@@ -394,9 +393,9 @@ public:
         refuseNothingToDraw();
         if (!model_.animations.empty()) warn("animations are ignored; the scene is drawn at rest");
         computeBounds();
-        if (out_.lights.size() > kMaxLights)
+        if (out_.lights.size() > kMaxSceneLights)
             warn("the file has " + std::to_string(out_.lights.size()) + " lights; the first " +
-                 std::to_string(kMaxLights) + " are used");
+                 std::to_string(kMaxSceneLights) + " are used");
         if (out_.lights.empty()) addDefaultLights();
         addFramingCamera();
     }

@@ -17,7 +17,6 @@ namespace t10 {
 
 namespace {
 
-constexpr int kMaxLights = 8; // the size of the Lights block arrays in Scene.frag
 constexpr GLuint kCameraBinding = 0;
 constexpr GLuint kLightBinding = 1; // binding 7 belongs to the stages' InvResolution block
 constexpr GLuint kDiffuseUnit = 0;
@@ -44,10 +43,10 @@ struct CameraBlock {
 };
 
 struct LightBlock {
-    glm::vec4 position[kMaxLights];  // xyz: world position
-    glm::vec4 colour[kMaxLights];    // rgb: intensity (the numerator of the 1/d^2 falloff)
-    glm::vec4 spot[kMaxLights];      // xyz: cone direction, w: cos(outer angle); -2 for point lights
-    glm::vec4 cone[kMaxLights];      // x: cos(inner angle), y: 1/range (0: unlimited)
+    glm::vec4 position[kMaxSceneLights];  // xyz: world position
+    glm::vec4 colour[kMaxSceneLights];    // rgb: intensity (the numerator of the 1/d^2 falloff)
+    glm::vec4 spot[kMaxSceneLights];      // xyz: cone direction, w: cos(outer angle); -2 for point lights
+    glm::vec4 cone[kMaxSceneLights];      // x: cos(inner angle), y: 1/range (0: unlimited)
     glm::ivec4 count; // only .x is read (int iLightCount)
 };
 
@@ -150,14 +149,14 @@ Scene::Scene(const ShaderManager& shaders, const SceneDescription& description)
 
     lights_ = description.lights;
     LightBlock lightBlock{};
-    for (std::size_t i = 0; i < lights_.size() && i < kMaxLights; ++i) {
+    for (std::size_t i = 0; i < lights_.size() && i < kMaxSceneLights; ++i) {
         const SceneLight& l = lights_[i];
         lightBlock.position[i] = glm::vec4(l.position, 1.0f);
         lightBlock.colour[i] = glm::vec4(l.intensity, 1.0f);
         lightBlock.spot[i] = glm::vec4(l.direction, l.spot ? l.outerConeCos : -2.0f);
         lightBlock.cone[i] = glm::vec4(l.spot ? l.innerConeCos : 1.0f, l.range > 0.0f ? 1.0f / l.range : 0.0f, 0, 0);
     }
-    lightBlock.count.x = static_cast<int>(std::min<std::size_t>(lights_.size(), kMaxLights));
+    lightBlock.count.x = static_cast<int>(std::min<std::size_t>(lights_.size(), kMaxSceneLights));
     lightUbo_ = makeBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, lightUbo_.get());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(LightBlock), &lightBlock, GL_STATIC_DRAW);

@@ -82,6 +82,10 @@ struct SceneLight {
     float outerConeCos = 0.0f;
 };
 
+// The most lights a scene uses: the size of Scene.frag's Lights block arrays (Scene uploads that many;
+// the loader warns about the rest).
+constexpr std::size_t kMaxSceneLights = 8;
+
 struct SceneDescription {
     std::string source;              // the file it came from
     std::vector<Image8> images;      // bottom row first; 1, 3 or 4 channels
