@@ -4,7 +4,8 @@
 usage: web_test.py COMMAND --web OUT_WEB --out DIR [options]
 
 Chromium is driven over the DevTools protocol (tools/web/cdp.py: a pipe, a local server on
-127.0.0.1, nothing else reachable; tools/web/web_page.py's StagePage: one tab on the stages' pages). A page is loaded with the command line as its query
+127.0.0.1, nothing else reachable; tools/web/web_page.py's StagePage: one tab on the stages'
+pages). A page is loaded with the command line as its query
 (?size=640x360&camera=default&frames=1, the goldens' settings), and the test waits for
 document.body.dataset.t10 to become "rendered" or "error" (the page's interface, WEB_CONTRACT.md).
 The frame is read with gl.readPixels from the default framebuffer, as --output reads it, and written
