@@ -303,8 +303,11 @@ GRADE_JOBS   ?= $(JOBS)
 # The interpreter FLIP's venv is made with (and runs with): it must be reachable by the user grading.
 GRADE_PYTHON ?= python3
 .PHONY: grade grade-args grade-deps grade-deps-or-skip
-grade-deps: PACKAGES += python3-venv
+# python3-venv is installed here, not by a target-specific PACKAGES: `deps` runs once per make, first
+# for whichever prerequisite comes first (build, for make grade-jobs-check), so a package grade-deps
+# added there was never installed (a fresh Debian 13: "ensurepip is not available").
 grade-deps: deps
+	@$(MAKE) --no-print-directory deps PACKAGES=python3-venv
 	@[ -x $(GRADE_VENV)/bin/flip ] && $(GRADE_VENV)/bin/pip show flip-evaluator 2>/dev/null | grep -qx 'Version: $(FLIP_VERSION)' || { \
 	    rm -rf $(GRADE_VENV) && $(GRADE_PYTHON) -m venv $(GRADE_VENV) && \
 	    $(GRADE_VENV)/bin/pip install --quiet --disable-pip-version-check flip-evaluator==$(FLIP_VERSION); }
