@@ -325,6 +325,7 @@ grade: grade-args build grade-deps
 # part's references, known mistakes, fitted parameters and broken submissions) graded with a fresh
 # cache into $(OUT)/bench-grader/; prints submissions per minute, CPU seconds and peak memory per submission.
 .PHONY: bench-grader
+bench-grader: PACKAGES += catch2 bubblewrap
 bench-grader: build grade-deps
 	python3 grader/bench_grader.py $(BIN)/t10-grade grader/tests/make_submissions.py $(CURDIR) $(OUT)/bench-grader $(GRADE_JOBS)
 
@@ -343,7 +344,8 @@ grade-sweep: build grade-deps
 # make test runs two). As root the grader runs as an unprivileged uid; SKIPPED (and passes) where that
 # cannot run at all (no namespaces, or a checkout or FLIP out of other users' reach: make grade-deps says so).
 .PHONY: grade-jobs-check
-grade-jobs-check: PACKAGES += bubblewrap
+# catch2 as for make grade: without the tests configured, t10-grade is not in `build` (CMakeLists.txt).
+grade-jobs-check: PACKAGES += catch2 bubblewrap
 grade-jobs-check: build grade-deps
 	@python3 grader/tests/isolation/fork_bomb_jobs.py $(CURDIR) $(BIN)/t10-grade $(GRADE_VENV)/bin/flip $(BUILD)/grade-jobs-check 20; \
 	rc=$$?; [ $$rc -eq 77 ] && echo "grade-jobs-check: SKIPPED (above: why)" && exit 0; exit $$rc
