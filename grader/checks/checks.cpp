@@ -977,6 +977,19 @@ bool luminanceLevelsCheck(CaseState& state, const CheckSpec&, Check& check) {
 // at 160x90. A wrong weight, base or bound moves texels by hundreds of steps.
 constexpr double kLogLuminanceSteps = 4.0;
 
+// The tolerance for a model of level 0 with another epsilon or white point. Both sources above are
+// errors in the log luminance, and the mapping divides the log by its range, ln(white / epsilon): a
+// model with a narrower range (a larger epsilon) shows the same log error as more R16 steps (epsilon
+// 1e-4: 7.7 against the tutorial's 20.9, so the lamp's 2 steps at 160x90 become 5). So the tolerance
+// holds in log luminance: kLogLuminanceSteps of the tutorial's range (1.3e-3), and never fewer than
+// kLogLuminanceSteps of the model's own (where the range is wider, R16's rounding still costs a step).
+double logLuminanceTolerance(const KeyModel& model) {
+    const auto range = [](const ref::Settings& s) { return std::log(s.whitePoint) - std::log(s.epsilon); };
+    const double own = range(model.settings);
+    if (!(own > 0.0)) return kLogLuminanceSteps;
+    return kLogLuminanceSteps * std::max(1.0, range(ref::Settings{}) / own);
+}
+
 // The models of luminance level 0 that explain it within the tolerance, named on the check.
 void nameLogLuminanceMistakes(CaseState& state, const ImageF& level0, Check& check) {
     const ImageF& acc = state.acc;
@@ -995,7 +1008,7 @@ void nameLogLuminanceMistakes(CaseState& state, const ImageF& level0, Check& che
             return m;
         };
         const Fit fit = fitParameter([&](double v) { return worstLuminanceSteps(level0, acc, model(v)); }, p.low, p.high, true);
-        if (fit.error <= kLogLuminanceSteps) name(check, p.id, p.steps, {fit.value});
+        if (fit.error <= logLuminanceTolerance(model(fit.value))) name(check, p.id, p.steps, {fit.value});
     }
     KeyModel log2Pass;
     log2Pass.log = ref::MappedLog::Log2Luminance;

@@ -81,8 +81,10 @@ FITTED = dict([
            [(WEIGHTS, "vec3(0.30f, 0.60f, 0.10f)")]),
     _value("fit_epsilon_a", "epsilon", 1e-4, "PostProcess.frag",
            [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.0001f;")]),
-    _value("fit_epsilon_b", "epsilon", 1e-6, "PostProcess.frag",
-           [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.000001f;")]),
+    # Step 4's epsilon (the log of level 0), where a narrower mapped range spreads the same log error
+    # over more R16 steps: at 1e-3 the lamps' texels at 160x90 are 7 steps off the model (issue 38).
+    _value("fit_epsilon_b", "epsilon", 1e-3, "PostProcessInit.frag",
+           [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.001f;")]),
     _value("fit_white_a", "white_point", 0.11, "PostProcess.frag",
            [("const float fYwhite = 0.22f;", "const float fYwhite = 0.11f;")]),
     _value("fit_white_b", "white_point", 0.4, "PostProcess.frag",

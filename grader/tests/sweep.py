@@ -77,10 +77,8 @@ SWEEP = [
 # not done). They are graded and printed like the others but do not fail the sweep; one that starts to
 # hold fails it ("remove it from KNOWN"), so the list cannot go stale.
 KNOWN = {
-    "sweep01_epsilon_5": "npot's luminance level 0 stays unexplained (step 5 lost): cause not found yet",
-    "sweep01_epsilon_6": "npot's luminance level 0 stays unexplained (step 5 lost): cause not found yet",
-    "sweep01_epsilon_7": "npot's luminance level 0 stays unexplained (step 5 lost): cause not found yet",
-    "sweep01_epsilon_8": "npot's luminance level 0 and 0.3 % of the frame's pixels stay unexplained: cause not found yet",
+    "sweep01_epsilon_8": "pot's frame keeps 0.3 % of its pixels unexplained (step 9 lost; npot's level 0 is named since "
+                         "the level 0 tolerance holds in log luminance): cause not found yet",
     "sweep03_epsilon_0": "on the extremes input the GPU's float operator overflows (pixels black or one primary where the "
                          "double model gives white); the models compute in double",
     "sweep04_white_point_0": "on the extremes input the GPU's float operator overflows (pixels black or one primary where "
