@@ -64,6 +64,11 @@ Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
 double toneMapLuminance(double y, double sceneKey, const Settings& settings = {});
 // How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
 std::uint8_t toUnorm8(double v);
+// How llvmpipe, which renders every frame this project compares, stores a float in the 8-bit frame:
+// it scales before it clamps, through a 32-bit integer, so a channel at or past 2^31 / 255 (8.4e6,
+// which a tone map can reach when its key is tiny) and NaN store 0; below that it is toUnorm8.
+std::uint8_t storeUnorm8(double v);
+inline constexpr double kUnorm8Overflow = 2147483648.0 / 255.0;
 
 // How a float is stored in GL_R11F_G11F_B10F: unsigned floats with 5 exponent bits and 6 (red,
 // green) or 5 (blue) mantissa bits. GL leaves the rounding to the implementation; Mesa truncates.

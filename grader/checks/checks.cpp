@@ -391,8 +391,10 @@ double frameResidual(const FrameInputs& in, const FrameModel& model, const Image
     for (int y = 0; y < in.accumulation.height; y += step)
         for (int x = 0; x < w; x += step, ++count)
             for (int k = 0; k < 3; ++k) {
-                const double d = std::abs(std::clamp(colours[std::size_t(y) * w + x][k], 0.0, 1.0) * 255.0 - frame.at(x, y, k));
-                sum += std::isfinite(d) ? d : 255.0;
+                const double v = colours[std::size_t(y) * w + x][k];
+                // As llvmpipe stores it (ref::storeUnorm8): past 2^31 / 255, and NaN, the frame holds 0.
+                const double stored = v < ref::kUnorm8Overflow ? std::clamp(v, 0.0, 1.0) * 255.0 : 0.0;
+                sum += std::abs(stored - frame.at(x, y, k));
             }
     return sum / (3.0 * double(count));
 }

@@ -85,8 +85,10 @@ FITTED = dict([
     # over more R16 steps: at 1e-3 the lamps' texels at 160x90 are 7 steps off the model (issue 38).
     _value("fit_epsilon_b", "epsilon", 1e-3, "PostProcessInit.frag",
            [("const float fEpsilon = 0.00000001f;", "const float fEpsilon = 0.001f;")]),
-    _value("fit_white_a", "white_point", 0.11, "PostProcess.frag",
-           [("const float fYwhite = 0.22f;", "const float fYwhite = 0.11f;")]),
+    # So low a white point takes the extremes case's brightest channels past what llvmpipe's 8-bit store
+    # can hold (2^31 / 255: it writes 0), which the frame models must follow (ref::storeUnorm8, issue 38).
+    _value("fit_white_a", "white_point", 0.03, "PostProcess.frag",
+           [("const float fYwhite = 0.22f;", "const float fYwhite = 0.03f;")]),
     _value("fit_white_b", "white_point", 0.4, "PostProcess.frag",
            [("const float fYwhite = 0.22f;", "const float fYwhite = 0.4f;")]),
     _value("fit_grey_a", "middle_grey", 1.1, "PostProcess.frag", [("1.03f - (2.0f", "1.1f - (2.0f")]),

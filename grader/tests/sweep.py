@@ -77,12 +77,6 @@ SWEEP = [
 # not done). They are graded and printed like the others but do not fail the sweep; one that starts to
 # hold fails it ("remove it from KNOWN"), so the list cannot go stale.
 KNOWN = {
-    "sweep01_epsilon_8": "pot's frame keeps 0.3 % of its pixels unexplained (step 9 lost; npot's level 0 is named since "
-                         "the level 0 tolerance holds in log luminance): cause not found yet",
-    "sweep03_epsilon_0": "on the extremes input the GPU's float operator overflows (pixels black or one primary where the "
-                         "double model gives white); the models compute in double",
-    "sweep04_white_point_0": "on the extremes input the GPU's float operator overflows (pixels black or one primary where "
-                             "the double model gives white); the models compute in double",
     "sweep05_middle_grey_10": "1.03001 is at the tolerance's edge (mean 0.0104 steps of 0.01): the white point and epsilon "
                               "fits explain it at the tutorial's values, the middle grey's does not reach the tolerance",
     "sweep10_blur_tap_inner_0": "below about 0.2 the inner tap moves a pass by less than the blur's tolerance: the fit "

@@ -78,7 +78,7 @@ set_tests_properties("grade: the endless loop's report says timeout" PROPERTIES 
 # --- Fitted parameters (issue 20): every parameter of the catalogue at two values the batch above
 # does not use, named with its value measured within 10 %, and mistakes outside the catalogue, which
 # must fail with no name (check_reports.py reads the values from make_submissions.FITTED). Shown to
-# fail on real reports of this batch: a value set 20 % away (white point 0.132 for 0.11) fails the
+# fail on real reports of this batch: a value set 20 % away (white point 0.036 for 0.03) fails the
 # 10 % test; a named submission listed as outside the catalogue fails "got names"; expecting another
 # id fails "not named" and "wrong names beside"; a mistakes.tsv without an id fails "lacks"; Part 1's
 # two reports swapped fail the steps-missing comparison (68 vs 93).

@@ -7,6 +7,7 @@
 #include "t10_catch.hpp"
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -178,4 +179,21 @@ TEST_CASE("the tone map keeps black and a NaN luminance black", "[reference]") {
         CHECK(m[1] == 0.0);
         CHECK(m[2] == 0.0);
     }
+}
+
+TEST_CASE("the 8-bit frame store is GL's below llvmpipe's integer overflow, and 0 from it on", "[reference]") {
+    for (const double v : {-3.0, 0.0, 0.2, 0.5, 1.0, 7.0, 1e6, ref::kUnorm8Overflow * 0.999999})
+        CHECK(ref::storeUnorm8(v) == ref::toUnorm8(v));
+    CHECK(ref::storeUnorm8(1e6) == 255);
+    // 2^31 / 255 and past it, and NaN: what llvmpipe writes (a Part 1 with white point 0.03, issue 38).
+    for (const double v : {ref::kUnorm8Overflow, 1e7, 1e30, std::numeric_limits<double>::infinity(), std::nan("")})
+        CHECK(ref::storeUnorm8(v) == 0);
+    // finalFrame stores that way: a tiny key takes a bright channel past it.
+    t10::ImageF acc(1, 1, 3);
+    acc.at(0, 0, 0) = 8.6f;
+    acc.at(0, 0, 1) = 6.4f;
+    acc.at(0, 0, 2) = 14.0f; // 9.2e6 once mapped; red's 8.6 maps to 5.7e6
+    const t10::Image8 frame = ref::finalFrame(acc, 9.4e-7);
+    CHECK(int(frame.at(0, 0, 0)) == 255);
+    CHECK(int(frame.at(0, 0, 2)) == 0);
 }
