@@ -332,7 +332,7 @@ bench-grader: build grade-deps
 # make grade-sweep (issue 38): every fitted parameter of the grader's mistake catalogue at values spread over
 # the range its fit searches (grader/tests/sweep.py), each as a submission: named with its value measured
 # within 10 %, or 100 for a value within the tolerance; prints the per-parameter table of the instructors'
-# page. About 120 submissions, 11 minutes on 2 loaded cores: too long for make test, which grades the value
+# page. 124 submissions, about 4 minutes of 2 cores: too long for make test, which grades the value
 # that regressed (Part 1's middle grey 1.0); .ci/run runs it.
 .PHONY: grade-sweep
 grade-sweep: PACKAGES += catch2 bubblewrap
