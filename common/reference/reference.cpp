@@ -72,13 +72,15 @@ std::uint8_t toUnorm8(double v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
-std::uint8_t storeUnorm8(double v) {
+double unorm8Level(double v) {
     // Measured on Mesa 22.3: a Part 1 whose key is 1e-6 writes 0 for all 1186 channels at or
     // past 2^31 / 255 of its extremes case and 255 for the 8030 between 1 and that. Debian 13's Mesa
     // stores the same (the fitted batch's white point 0.03 is named there).
-    if (!(v < kUnorm8Overflow)) return 0;
-    return toUnorm8(v);
+    if (!(v < kUnorm8Overflow)) return 0.0;
+    return std::clamp(v, 0.0, 1.0) * 255.0;
 }
+
+std::uint8_t storeUnorm8(double v) { return static_cast<std::uint8_t>(std::lround(unorm8Level(v))); }
 
 double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode) {
     if (mode == FloatStore::Exact) return v;

@@ -69,6 +69,8 @@ std::uint8_t toUnorm8(double v);
 // which a tone map can reach when its key is tiny) and NaN store 0; below that it is toUnorm8.
 std::uint8_t storeUnorm8(double v);
 inline constexpr double kUnorm8Overflow = 2147483648.0 / 255.0;
+// The level storeUnorm8 rounds, in [0, 255]: what a fit's residual compares without the rounding.
+double unorm8Level(double v);
 
 // How a float is stored in GL_R11F_G11F_B10F: unsigned floats with 5 exponent bits and 6 (red,
 // green) or 5 (blue) mantissa bits. GL leaves the rounding to the implementation; Mesa truncates.

@@ -391,10 +391,8 @@ double frameResidual(const FrameInputs& in, const FrameModel& model, const Image
     for (int y = 0; y < in.accumulation.height; y += step)
         for (int x = 0; x < w; x += step, ++count)
             for (int k = 0; k < 3; ++k) {
-                const double v = colours[std::size_t(y) * w + x][k];
-                // As llvmpipe stores it (ref::storeUnorm8): past 2^31 / 255, and NaN, the frame holds 0.
-                const double stored = v < ref::kUnorm8Overflow ? std::clamp(v, 0.0, 1.0) * 255.0 : 0.0;
-                sum += std::abs(stored - frame.at(x, y, k));
+                // The level llvmpipe stores, unrounded, so that the residual varies smoothly with the value.
+                sum += std::abs(ref::unorm8Level(colours[std::size_t(y) * w + x][k]) - frame.at(x, y, k));
             }
     return sum / (3.0 * double(count));
 }

@@ -188,6 +188,9 @@ TEST_CASE("the 8-bit frame store is GL's below llvmpipe's integer overflow, and 
     // 2^31 / 255 and past it, and NaN: what llvmpipe writes (a Part 1 with white point 0.03, issue 38).
     for (const double v : {ref::kUnorm8Overflow, 1e7, 1e30, std::numeric_limits<double>::infinity(), std::nan("")})
         CHECK(ref::storeUnorm8(v) == 0);
+    // The unrounded level the fits compare: the same rule.
+    CHECK(ref::unorm8Level(0.5) == 127.5);
+    CHECK(ref::unorm8Level(ref::kUnorm8Overflow) == 0.0);
     // finalFrame stores that way: a tiny key takes a bright channel past it.
     t10::ImageF acc(1, 1, 3);
     acc.at(0, 0, 0) = 8.6f;
