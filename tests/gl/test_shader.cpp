@@ -3,10 +3,14 @@
 #include "t10/context.hpp"
 #include "t10/error.hpp"
 #include "t10/shader.hpp"
+#include "t10/mipmaps.hpp"
 #include "t10/texture.hpp"
+#include "t10/tga.hpp"
 
 #include "t10_catch.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -100,4 +104,49 @@ TEST_CASE("an unknown extension is an error, not a guess", "[shader]") {
 TEST_CASE("a missing texture names the path", "[texture]") {
     context();
     CHECK_THROWS_WITH(t10::loadTextureTga("/no/such/texture.tga", false), Catch::Contains("/no/such/texture.tga"));
+}
+
+// The CPU mip levels (mipmaps.hpp) beside what the driver's glGenerateMipmap makes of the scene's own
+// linear textures (a normal map and a height map), every level down to 1x1. On llvmpipe they are the
+// same bytes, which keeps every golden frame unchanged; on another driver the filter is its own (GL
+// leaves it to the implementation), so elsewhere the bound is one 8-bit step. A point-sampled level
+// (the first texel of each 2x2 block) is what the bound must reject.
+TEST_CASE("CPU mip levels of linear textures are glGenerateMipmap's", "[texture]") {
+    context();
+    const std::string renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const int bound = renderer.find("llvmpipe") != std::string::npos ? 0 : 1;
+    for (const char* file : {"bricks_normal.tga", "bricks_depth.tga"}) {
+        const t10::Image8 image = t10::loadTga(std::string(T10_SOURCE_ROOT) + "/common/assets/" + file);
+        const GLenum format = image.channels == 1 ? GL_RED : GL_RGB;
+        GLuint texture = 0;
+        glGenTextures(1, &texture);
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glTexStorage2D(GL_TEXTURE_2D, 9, image.channels == 1 ? GL_R8 : GL_RGB8, image.width, image.height);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, format, GL_UNSIGNED_BYTE, image.data.data());
+        glGenerateMipmap(GL_TEXTURE_2D);
+        REQUIRE((image.width == 256 && image.height == 256));
+        t10::Image8 cpu = image;
+        for (int level = 1; level < 9; ++level) {
+            const t10::Image8 above = cpu;
+            cpu = t10::nextMipLevel(above);
+            t10::Image8 gpu(cpu.width, cpu.height, cpu.channels);
+            glGetTexImage(GL_TEXTURE_2D, level, format, GL_UNSIGNED_BYTE, gpu.data.data());
+            int largest = 0;
+            int pointLargest = 0;
+            for (int y = 0; y < cpu.height; ++y)
+                for (int x = 0; x < cpu.width; ++x)
+                    for (int c = 0; c < cpu.channels; ++c) {
+                        largest = std::max(largest, std::abs(int(cpu.at(x, y, c)) - int(gpu.at(x, y, c))));
+                        pointLargest = std::max(pointLargest, std::abs(int(above.at(2 * x, 2 * y, c)) - int(gpu.at(x, y, c))));
+                    }
+            INFO(file << " level " << level << " on " << renderer);
+            CHECK(largest <= bound);
+            if (level < 6) CHECK(pointLargest > bound); // (the smallest levels of a smooth map may agree)
+        }
+        glDeleteTextures(1, &texture);
+    }
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
 }

@@ -1,8 +1,13 @@
 // Uploads 8-bit images as immutable, fully mip-mapped 2D textures (trilinear and repeating unless
-// the caller's sampling says otherwise).
+// the caller's sampling says otherwise). The levels of linear data (normals, heights, grey and
+// linear colour) with power-of-two sides are made on the CPU (mipmaps.hpp): llvmpipe's own texels bit
+// for bit, without the blit shader glGenerateMipmap compiles per format (tens of milliseconds each on
+// llvmpipe, in every process). sRGB colour keeps glGenerateMipmap: drivers filter it through
+// approximate sRGB curves that no CPU formula reproduces exactly, and the goldens hold llvmpipe's.
 #include "t10/texture.hpp"
 
 #include "t10/error.hpp"
+#include "t10/mipmaps.hpp"
 #include "t10/tga.hpp"
 
 #include <algorithm>
@@ -23,6 +28,8 @@ GLsizei mipLevelCount(int width, int height) {
     }
     return levels;
 }
+
+bool isPowerOfTwo(int side) { return side > 0 && (side & (side - 1)) == 0; }
 
 struct Formats {
     GLenum internalFormat;
@@ -66,8 +73,8 @@ Texture uploadTexture(const Image8& image, bool srgb, const TextureSampling& sam
 
     Texture texture = makeTexture();
     glBindTexture(GL_TEXTURE_2D, texture.get());
-    glTexStorage2D(GL_TEXTURE_2D, mipLevelCount(image.width, image.height), f.internalFormat,
-                   image.width, image.height);
+    const GLsizei levels = mipLevelCount(image.width, image.height);
+    glTexStorage2D(GL_TEXTURE_2D, levels, f.internalFormat, image.width, image.height);
 
     // Rows of 1- and 3-channel images are tightly packed, not 4-byte aligned.
     GLint previousAlignment = 4;
@@ -75,9 +82,18 @@ Texture uploadTexture(const Image8& image, bool srgb, const TextureSampling& sam
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, f.format, GL_UNSIGNED_BYTE,
                     image.data.data());
+    // Power-of-two sides only: there every level is exact 2x2 blocks, as the GPU's filter sees them.
+    const bool cpuLevels = !(srgb && image.channels != 1) && isPowerOfTwo(image.width) && isPowerOfTwo(image.height);
+    Image8 below;
+    const Image8* above = &image;
+    for (GLint level = 1; level < levels && cpuLevels; ++level) {
+        below = nextMipLevel(*above);
+        glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, below.width, below.height, f.format, GL_UNSIGNED_BYTE,
+                        below.data.data());
+        above = &below;
+    }
     glPixelStorei(GL_UNPACK_ALIGNMENT, previousAlignment);
-
-    glGenerateMipmap(GL_TEXTURE_2D);
+    if (!cpuLevels) glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, sampling.minFilter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, sampling.magFilter);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, sampling.wrapS);
