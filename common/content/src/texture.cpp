@@ -83,7 +83,8 @@ Texture uploadTexture(const Image8& image, bool srgb, const TextureSampling& sam
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, f.format, GL_UNSIGNED_BYTE,
                     image.data.data());
     // Power-of-two sides only: there every level is exact 2x2 blocks, as the GPU's filter sees them.
-    const bool cpuLevels = !(srgb && image.channels != 1) && isPowerOfTwo(image.width) && isPowerOfTwo(image.height);
+    const bool srgbFormat = f.internalFormat == GL_SRGB8 || f.internalFormat == GL_SRGB8_ALPHA8;
+    const bool cpuLevels = !srgbFormat && isPowerOfTwo(image.width) && isPowerOfTwo(image.height);
     Image8 below;
     const Image8* above = &image;
     for (GLint level = 1; level < levels && cpuLevels; ++level) {
