@@ -71,6 +71,16 @@ foreach(kind z_only alpha_only)
 endforeach()
 t10_reliability_test("a luminance-only EXR renders"
     ${EXPECT} 0 "wrote" -- ${BIN}/${S3} --headless --backend egl --input ${REL_IN}/y_only.exr --output ${REL_OUT}/y_only.png)
+# --input alone loads no room (input_alone_test.sh), yet --camera and --scene are still checked
+# against the room when they are given with it.
+t10_reliability_test("--input alone reads no scene"
+    ${REL}/input_alone_test.sh ${BIN}/${S3} ${REL_IN}/y_only.exr ${REL_OUT}/y_only_alone.png)
+t10_reliability_test("--input with an unknown --camera is refused as without it"
+    ${EXPECT} 2 "--camera nowhere: unknown camera" --
+    ${BIN}/${S3} --headless --backend egl --input ${REL_IN}/y_only.exr --camera nowhere --output ${REL_OUT}/y_only_camera.png)
+t10_reliability_test("--input with --camera reads the scene"
+    ${EXPECT} 0 "scene: .*triangles" --
+    ${BIN}/${S3} --headless --backend egl --verbose --input ${REL_IN}/y_only.exr --camera lights --output ${REL_OUT}/y_only_lights.png)
 # +inf, -inf and NaN in three pixels (inf_nan.exr): every stage warns once over three frames, every
 # dumped texture level is finite, and the +inf pixel (1, 1) saturates instead of turning black.
 foreach(stage IN LISTS T10_STAGES)

@@ -166,6 +166,12 @@ Scene::Scene(const ShaderManager& shaders, const SceneDescription& description)
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
+Scene::Scene(ImageF input) {
+    if (input.channels != 3 && input.channels != 4)
+        throw Error("Scene: an input image needs 3 or 4 channels, not " + std::to_string(input.channels));
+    input_ = std::move(input);
+}
+
 Scene::~Scene() = default;
 
 void Scene::resize(int width, int height) {
@@ -201,11 +207,6 @@ void Scene::resize(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void Scene::setInputImage(std::optional<ImageF> image) {
-    if (image && image->channels != 3 && image->channels != 4)
-        throw Error("Scene: an input image needs 3 or 4 channels, not " + std::to_string(image->channels));
-    input_ = std::move(image);
-}
 
 void Scene::render(const Camera& camera) {
     if (!framebuffer_) throw Error("Scene::render called before Scene::resize");

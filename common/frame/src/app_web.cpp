@@ -162,7 +162,7 @@ std::string App::applyWebSettings(const Settings& next) {
     const std::string viewBefore = settings_.views.view;
     settings_ = next;
     if (cameraChanged) {
-        loadScene();
+        loadScene(true);
         scene_->resize(width_, height_);
     }
     if (sizeChanged) {

@@ -20,6 +20,10 @@ class Scene {
 public:
     // Uploads the description's geometry and textures; loads the scene shaders through `shaders`.
     Scene(const ShaderManager& shaders, const SceneDescription& description);
+    // A fixed HDR image in place of the room (the --input option and the numeric tests): no room is
+    // loaded, uploaded or compiled, since none is drawn. The image needs 3 or 4 channels and must
+    // match the size given to resize().
+    explicit Scene(ImageF input);
     ~Scene();
     Scene(const Scene&) = delete;
     Scene& operator=(const Scene&) = delete;
@@ -29,12 +33,8 @@ public:
     void resize(int width, int height);
 
     // Renders into the accumulation framebuffer with depth testing, leaving it bound for drawing.
-    // With an input image set, uploads that image instead of drawing the room.
+    // A scene made from an input image uploads that image instead (the camera does not matter).
     void render(const Camera& camera);
-
-    // Replaces the room by a fixed HDR image (the --input option and the numeric tests). The image
-    // must match the size given to resize(); channels 3 or 4.
-    void setInputImage(std::optional<ImageF> image);
 
     // Interactive speed on software renderers (the window sets these; headless renders keep the
     // defaults, so the golden images do not change). With render-on-change, render() skips drawing

@@ -78,7 +78,7 @@ private:
 #endif
 
 private:
-    void loadScene(); // --scene (or the built-in scene) and --camera
+    void loadScene(bool buildRoom); // --scene (or the built-in scene) and --camera; the room's GL objects if buildRoom
     void resize(int width, int height);
     void buildStage();
     void quitStage();
