@@ -29,11 +29,8 @@ set(T10_BUILD_TESTS OFF CACHE BOOL "" FORCE) # the tests run natively (make test
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)
 
-# Each library's sources compiled as a few combined files (CMake's unity build): CLI11, nlohmann-json
-# and glm are parsed and instantiated once per batch instead of once per file, which took the web
-# build from about 270 to about 170 CPU-seconds (-O1, all five pages). A source that must stand alone
-# says so with SKIP_UNITY_BUILD_INCLUSION (common/CMakeLists.txt).
-set(CMAKE_UNITY_BUILD ON)
+# The unity build (the top-level CMakeLists.txt turns it on for every build) took the web build from
+# about 270 to about 170 CPU-seconds (-O1, all five pages).
 
 # The host's header-only libraries, each linked into host-include/ by name.
 set(T10_WEB_HOST_PREFIXES /usr/include /usr/local/include /opt/homebrew/include

@@ -64,7 +64,7 @@ std::string stepsText(const std::vector<int>& steps) {
 }
 
 // What the student reads first: the status, the score and every failed check with its diagnosis.
-std::string summary(const Report& report) {
+std::string platformSummary(const Report& report) {
     std::ostringstream out;
     out << "Tutorial 10 Part " << report.part << ": " << statusName(report.status) << ", score " << report.score() << "/100";
     if (report.status == Status::Graded) {
@@ -166,7 +166,7 @@ std::vector<std::pair<std::string, std::string>> checkImages(const Check& c) {
 // FLIP check of one case show the same student frame) is named, not repeated; images that would take
 // the result past kGradescopeImageBudget are named as left out (report.html has every one).
 std::string gradescopeHtml(const Report& report, const std::string& dir) {
-    std::string html = "<pre>" + htmlEscape(summary(report)) + "</pre>\n";
+    std::string html = "<pre>" + htmlEscape(platformSummary(report)) + "</pre>\n";
     std::map<std::string, std::string> shown; // data URI -> where it was first shown
     std::string omitted;
     std::size_t imageBytes = 0;
@@ -245,7 +245,7 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
     // Frames and heat-maps of failed image checks, once each (a FLIP check covers every step, so they
     // go in the top-level images, not in each test), as PNG data URIs while they fit.
     // The text's size, with room for the note on left-out images and the images' labels.
-    const std::size_t textBytes = tests.str().size() + 3 * summary(report).size() + 8 * 1024;
+    const std::size_t textBytes = tests.str().size() + 3 * platformSummary(report).size() + 8 * 1024;
     const std::size_t imageBudget = kPrairieLearnLimit > textBytes ? kPrairieLearnLimit - textBytes : 0;
     std::string images, omitted;
     std::set<std::string> seen;  // a frame and a FLIP check of one case show the same student frame
@@ -269,7 +269,7 @@ std::string prairieLearn(const Report& report, const std::string& dir) {
             images += std::string(images.empty() ? "" : ",") + "\n    {\"label\": " + jsonQuoted(label) + ", \"url\": \"" + url + "\"}";
         }
     }
-    std::string output = summary(report);
+    std::string output = platformSummary(report);
     if (!omitted.empty()) output += "\nImages left out to keep the result under 1 MB: " + omitted + " (they are in report.html).";
     std::ostringstream out;
     out << "{\n  \"gradable\": " << (gradable ? "true" : "false") << ",\n  \"score\": " << number(report.score() / 100.0, 2);

@@ -20,7 +20,7 @@
 
 namespace {
 
-constexpr int kSide = 8;
+constexpr int kProbeSide = 8;
 
 // One triangle covering the viewport, from gl_VertexID alone (no vertex buffer).
 const char* kVertex = "#version 430 core\n"
@@ -87,8 +87,8 @@ std::vector<float> draw(GLuint program, bool es, const t10::GlslEsShader& fragme
     glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> pixels(kSide * kSide * 4);
-    glReadPixels(0, 0, kSide, kSide, GL_RGBA, GL_FLOAT, pixels.data());
+    std::vector<float> pixels(kProbeSide * kProbeSide * 4);
+    glReadPixels(0, 0, kProbeSide, kProbeSide, GL_RGBA, GL_FLOAT, pixels.data());
     REQUIRE(glGetError() == GL_NO_ERROR);
     return pixels;
 }
@@ -99,13 +99,13 @@ struct Target {
     Target() {
         glGenRenderbuffers(1, &colour);
         glBindRenderbuffer(GL_RENDERBUFFER, colour);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kSide, kSide);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kProbeSide, kProbeSide);
         glGenFramebuffers(1, &fbo);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
         glGenVertexArrays(1, &vao);
         glBindVertexArray(vao);
-        glViewport(0, 0, kSide, kSide);
+        glViewport(0, 0, kProbeSide, kProbeSide);
     }
     ~Target() {
         glDeleteVertexArrays(1, &vao);
@@ -164,19 +164,19 @@ TEST_CASE("Part 3's Gauss.frag and its translation blur alike in both directions
     const Target target;
     const Programs p = programs(readText(T10_SOURCE_ROOT "/tutorial10_part3_gaussian/Gauss.frag"));
     // The input at unit 17 (the shader's binding), InvResolution at binding 7, as the stage sets them.
-    std::vector<float> input(kSide * kSide * 4);
+    std::vector<float> input(kProbeSide * kProbeSide * 4);
     for (std::size_t i = 0; i < input.size(); ++i) input[i] = static_cast<float>((i * 7919u) % 101u) / 100.0f;
     GLuint texture = 0, ubo = 0;
     glGenTextures(1, &texture);
     glActiveTexture(GL_TEXTURE0 + 17);
     glBindTexture(GL_TEXTURE_2D, texture);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kSide, kSide);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSide, kSide, GL_RGBA, GL_FLOAT, input.data());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, kProbeSide, kProbeSide);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kProbeSide, kProbeSide, GL_RGBA, GL_FLOAT, input.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    const float invResolution[2] = {1.0f / kSide, 1.0f / kSide};
+    const float invResolution[2] = {1.0f / kProbeSide, 1.0f / kProbeSide};
     glGenBuffers(1, &ubo);
     glBindBufferBase(GL_UNIFORM_BUFFER, 7, ubo);
     glBufferData(GL_UNIFORM_BUFFER, sizeof invResolution, invResolution, GL_STATIC_DRAW);

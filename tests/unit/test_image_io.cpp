@@ -20,7 +20,7 @@
 
 namespace {
 
-const std::string kFixtureDir = std::string(T10_TEST_FIXTURE_DIR);
+const std::string kImageIoFixtureDir = std::string(T10_TEST_FIXTURE_DIR);
 
 // The 7x5 fixtures' formula (tests/fixtures/tga/make_fixtures.py, small_pixel), row 0 = bottom.
 int expectedRgb(int x, int y, int channel) {
@@ -43,7 +43,7 @@ void writeText(const std::string& path, const std::string& content) {
     REQUIRE(out);
 }
 
-std::vector<std::uint8_t> readBytes(const std::string& path) { return t10::readFile(path); }
+std::vector<std::uint8_t> readImageBytes(const std::string& path) { return t10::readFile(path); }
 
 // Distinct values per pixel and channel, different between the bottom and the top row.
 t10::Image8 makeImage8(int w, int h, int c) {
@@ -83,7 +83,7 @@ TEST_CASE("PNG reader returns the bottom row first", "[image_io]") {
     // Written by Pillow from a known formula: an independent check of readPng's orientation. With
     // the round trip above it also pins writePng's.
     const std::string name = GENERATE(as<std::string>{}, "rgb24_raw_bl", "rgba32_raw_bl");
-    const t10::Image8 img = t10::readPng(kFixtureDir + "/tga/" + name + ".png");
+    const t10::Image8 img = t10::readPng(kImageIoFixtureDir + "/tga/" + name + ".png");
     REQUIRE(img.width == 7);
     REQUIRE(img.height == 5);
     for (int y = 0; y < 5; ++y)
@@ -98,7 +98,7 @@ TEST_CASE("PNG errors name the file", "[image_io]") {
     requireThrowsNaming([](const std::string& p) { t10::readPng(p); }, garbage);
     const std::string truncated = scratchPath("truncated.png");
     t10::writePng(truncated, makeImage8(16, 16, 3));
-    std::vector<std::uint8_t> bytes = readBytes(truncated);
+    std::vector<std::uint8_t> bytes = readImageBytes(truncated);
     bytes.resize(bytes.size() / 2);
     writeText(truncated, std::string(bytes.begin(), bytes.end()));
     requireThrowsNaming([](const std::string& p) { t10::readPng(p); }, truncated);
@@ -151,7 +151,7 @@ TEST_CASE("EXR round trip keeps HDR values within half precision", "[image_io]")
 TEST_CASE("EXR reader returns the bottom row first", "[image_io]") {
     // Written by ImageMagick from the formula's 8-bit values (value / 255, no alpha channel).
     const double kRelTolerance = std::ldexp(1.0, -11); // half precision, as above
-    const t10::ImageF img = t10::readExr(kFixtureDir + "/image_io/rgb_7x5.exr");
+    const t10::ImageF img = t10::readExr(kImageIoFixtureDir + "/image_io/rgb_7x5.exr");
     REQUIRE(img.width == 7);
     REQUIRE(img.height == 5);
     REQUIRE(img.channels == 4);
@@ -207,7 +207,7 @@ TEST_CASE("PFM round trip is exact and stores the bottom row first", "[image_io]
     REQUIRE(back.channels == channels);
     CHECK(back.data == img.data);
 
-    const std::vector<std::uint8_t> bytes = readBytes(path);
+    const std::vector<std::uint8_t> bytes = readImageBytes(path);
     const std::string header = std::string(channels == 1 ? "Pf" : "PF") + "\n3 2\n-1.0\n";
     REQUIRE(bytes.size() == header.size() + img.data.size() * 4);
     CHECK(std::string(bytes.begin(), bytes.begin() + static_cast<std::ptrdiff_t>(header.size())) == header);
@@ -232,7 +232,7 @@ TEST_CASE("PFM of an RGBA image drops alpha", "[image_io]") {
 TEST_CASE("PFM reader reads an independent big-endian file bottom row first", "[image_io]") {
     // ImageMagick writes PFM big-endian (scale +1.0). Values are 8-bit / 255 computed in double
     // and stored as float: allow a float rounding step.
-    const t10::ImageF img = t10::readPfm(kFixtureDir + "/image_io/rgb_7x5_big_endian.pfm");
+    const t10::ImageF img = t10::readPfm(kImageIoFixtureDir + "/image_io/rgb_7x5_big_endian.pfm");
     REQUIRE(img.width == 7);
     REQUIRE(img.height == 5);
     REQUIRE(img.channels == 3);

@@ -17,7 +17,7 @@
 
 namespace {
 
-const std::string kFixtureDir = std::string(T10_TEST_FIXTURE_DIR) + "/image_io/";
+const std::string kReliabilityFixtureDir = std::string(T10_TEST_FIXTURE_DIR) + "/image_io/";
 
 std::filesystem::path scratchDir(const std::string& name) {
     const std::filesystem::path dir = std::filesystem::path(T10_TEST_TMP_DIR) / "reliability" / name;
@@ -27,7 +27,7 @@ std::filesystem::path scratchDir(const std::string& name) {
 }
 
 // An independent reader (std::ifstream): file.cpp's writer is what these tests check.
-std::string readText(const std::filesystem::path& path) {
+std::string readWholeText(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
@@ -43,7 +43,7 @@ TEST_CASE("writeFileAtomically replaces the file whole and leaves no temporary f
     const std::string path = (dir / "out.bin").string();
     t10::writeFileAtomically(path, "first", 5, "test");
     t10::writeFileAtomically(path, "second", 6, "test");
-    CHECK(readText(path) == "second");
+    CHECK(readWholeText(path) == "second");
     CHECK(fileCount(dir) == 1);
 }
 
@@ -64,7 +64,7 @@ TEST_CASE("writeFileAtomically fails with the system's reason and keeps what was
     std::ofstream(blocked / "keep.txt") << "kept";
     CHECK_THROWS_WITH(t10::writeFileAtomically(blocked.string(), "x", 1, "PNG"),
                       Catch::Contains("Is a directory"));
-    CHECK(readText(blocked / "keep.txt") == "kept");
+    CHECK(readWholeText(blocked / "keep.txt") == "kept");
     CHECK(fileCount(dir) == 1); // only blocked.png/: no temporary file left
 }
 
@@ -75,7 +75,7 @@ TEST_CASE("writePng into a missing folder says why") {
 }
 
 TEST_CASE("readExr refuses an image beyond the caller's limits before reading its pixels") {
-    const std::string path = kFixtureDir + "rgb_7x5.exr";
+    const std::string path = kReliabilityFixtureDir + "rgb_7x5.exr";
     t10::ExrLimits limits;
     limits.maxSide = 6;
     limits.maxSideReason = "test side";
@@ -98,7 +98,7 @@ TEST_CASE("the EXR files the fuzz target found are refused at once") {
                              "fuzz_tile_overflow.exr"}) {
         INFO(name);
         const auto start = std::chrono::steady_clock::now();
-        CHECK_THROWS_WITH(t10::readExr(kFixtureDir + name), Catch::Contains("is malformed") ||
+        CHECK_THROWS_WITH(t10::readExr(kReliabilityFixtureDir + name), Catch::Contains("is malformed") ||
                                                                 Catch::Contains("more than the file holds") ||
                                                                 Catch::Contains("larger than the image"));
         // Generous: the check itself takes microseconds; the allocation it prevents took seconds.

@@ -22,7 +22,7 @@ namespace {
 
 using Bytes = std::vector<std::uint8_t>;
 
-const std::string kFixtureDir = std::string(T10_TEST_FIXTURE_DIR) + "/tga/";
+const std::string kTgaFixtureDir = std::string(T10_TEST_FIXTURE_DIR) + "/tga/";
 
 struct Header {
     int idLength = 0;
@@ -83,7 +83,7 @@ std::string headerError(const Header& h, std::size_t dataBytes) {
     return decodeError(withData(makeHeader(h), dataBytes));
 }
 
-Bytes readBytes(const std::string& path) { return t10::readFile(path); }
+Bytes readTgaBytes(const std::string& path) { return t10::readFile(path); }
 
 // The generator's formula for the 7x5 fixtures (make_fixtures.py, small_pixel), row 0 = bottom.
 std::uint8_t expectedSmall(int x, int y, int channel, int channels) {
@@ -107,8 +107,8 @@ TEST_CASE("TGA fixtures from an independent writer decode to their reference PNG
         "wide_rgb24_rle_bl", "wide_rgb24_raw_tl", "wide_grey8_rle_tl", "wide_rgba32_rle_tl");
     INFO("fixture " << name);
     t10::Image8 tga;
-    REQUIRE_NOTHROW(tga = t10::loadTga(kFixtureDir + name + ".tga"));
-    const t10::Image8 reference = t10::readPng(kFixtureDir + name + ".png");
+    REQUIRE_NOTHROW(tga = t10::loadTga(kTgaFixtureDir + name + ".tga"));
+    const t10::Image8 reference = t10::readPng(kTgaFixtureDir + name + ".png");
     REQUIRE(tga.width == reference.width);
     REQUIRE(tga.height == reference.height);
     REQUIRE(tga.channels == reference.channels);
@@ -123,7 +123,7 @@ TEST_CASE("TGA 7x5 fixtures match the generator formula with row 0 at the bottom
         "rgba32_raw_bl", "rgba32_raw_tl", "rgba32_rle_bl", "rgba32_rle_tl", "rgb24_raw_bl_imageid");
     INFO("fixture " << name);
     t10::Image8 img;
-    REQUIRE_NOTHROW(img = t10::loadTga(kFixtureDir + name + ".tga"));
+    REQUIRE_NOTHROW(img = t10::loadTga(kTgaFixtureDir + name + ".tga"));
     REQUIRE(img.width == 7);
     REQUIRE(img.height == 5);
     const int expectedChannels = name.rfind("grey8", 0) == 0 ? 1 : name.rfind("rgba32", 0) == 0 ? 4 : 3;
@@ -138,7 +138,7 @@ TEST_CASE("TGA 7x5 fixtures match the generator formula with row 0 at the bottom
 
 TEST_CASE("TGA wide fixture with header sizes above 127 and RLE runs over 128 pixels", "[tga]") {
     t10::Image8 tga;
-    REQUIRE_NOTHROW(tga = t10::loadTga(kFixtureDir + "wide_rgb24_rle_bl.tga"));
+    REQUIRE_NOTHROW(tga = t10::loadTga(kTgaFixtureDir + "wide_rgb24_rle_bl.tga"));
     REQUIRE(tga.width == 400);
     REQUIRE(tga.height == 2);
     // Bottom row (row 0): a ramp of 50, then a run of 350 of (17, 170, 34).
@@ -349,7 +349,7 @@ TEST_CASE("TGA truncated or corrupted fixtures never crash", "[tga]") {
     // under AddressSanitizer this also proves there is no out-of-bounds read.
     const std::string name = GENERATE(as<std::string>{}, "rgba32_rle_tl", "rgb24_raw_bl_imageid", "wide_grey8_rle_tl");
     INFO("fixture " << name);
-    const Bytes full = readBytes(kFixtureDir + name + ".tga");
+    const Bytes full = readTgaBytes(kTgaFixtureDir + name + ".tga");
     const std::size_t pixelBytesEnd = full.size() - 26; // the TGA 2.0 footer is 26 bytes, not needed
     for (std::size_t n = 0; n < pixelBytesEnd; ++n) {
         const std::string err = errorOf([&] { t10::decodeTga(full.data(), n, "cut.tga"); });
@@ -374,12 +374,12 @@ TEST_CASE("TGA truncated or corrupted fixtures never crash", "[tga]") {
 }
 
 TEST_CASE("TGA missing file gives an error naming the path", "[tga]") {
-    const std::string path = kFixtureDir + "does_not_exist.tga";
+    const std::string path = kTgaFixtureDir + "does_not_exist.tga";
     CHECK_THROWS_AS(t10::loadTga(path), t10::Error);
     CHECK(errorOf([&] { t10::loadTga(path); }) == path + ": cannot open file: No such file or directory");
 }
 
 TEST_CASE("TGA loadTga on a directory fails cleanly", "[tga]") {
-    CHECK_THROWS_AS(t10::loadTga(kFixtureDir), t10::Error);
-    CHECK_THAT(errorOf([&] { t10::loadTga(kFixtureDir); }), Catch::StartsWith(kFixtureDir + ": "));
+    CHECK_THROWS_AS(t10::loadTga(kTgaFixtureDir), t10::Error);
+    CHECK_THAT(errorOf([&] { t10::loadTga(kTgaFixtureDir); }), Catch::StartsWith(kTgaFixtureDir + ": "));
 }
