@@ -54,18 +54,33 @@ double middleGrey(double sceneKey, const Settings& settings) {
     return settings.middleGrey - 2.0 / (2.0 + std::log10(sceneKey + 1.0));
 }
 
-double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
+namespace {
+
+// The tone map with dg already computed: a frame's pixels share one key, and log10 per pixel was the
+// largest part of the grader's frame fits. The same operations in the same order as without it.
+double toneMapLuminance(double y, double sceneKey, double grey, const Settings& settings) {
     if (!(y > 0.0)) return 0.0;
-    const double relative = middleGrey(sceneKey, settings) * y / sceneKey;
+    const double relative = grey * y / sceneKey;
     const double yw = settings.whitePoint;
     return relative * (1.0 + relative / (yw * yw)) / (1.0 + relative);
 }
 
-Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
+Rgb toneMap(const Rgb& colour, double sceneKey, double grey, const Settings& settings) {
     const double y = luminance(colour, settings);
     if (!(y > 0.0)) return {0.0, 0.0, 0.0};
-    const double mapped = toneMapLuminance(y, sceneKey, settings);
+    const double mapped = toneMapLuminance(y, sceneKey, grey, settings);
     return {colour[0] * mapped / y, colour[1] * mapped / y, colour[2] * mapped / y};
+}
+
+} // namespace
+
+double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
+    if (!(y > 0.0)) return 0.0;
+    return toneMapLuminance(y, sceneKey, middleGrey(sceneKey, settings), settings);
+}
+
+Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings) {
+    return toneMap(colour, sceneKey, middleGrey(sceneKey, settings), settings);
 }
 
 std::uint8_t toUnorm8(double v) {
@@ -121,7 +136,16 @@ FloatStore detectFloatStore(const ImageF& stored, const ImageF& exact) {
     return above * 4 > above + below ? FloatStore::RoundToNearest : FloatStore::Truncate;
 }
 
-double sampleBilinear(const ImageF& image, int c, double u, double v) {
+namespace {
+
+// Where a bilinear sample reads and how it weighs the four texels, shared by its channels (the
+// grader's blur fits sample millions of times).
+struct BilinearTaps {
+    std::size_t texel[4];
+    double weight[4];
+};
+
+BilinearTaps bilinearTaps(const ImageF& image, double u, double v) {
     // Texel centres sit at (i + 0.5) / size, as in GL.
     const double x = u * image.width - 0.5;
     const double y = v * image.height - 0.5;
@@ -129,17 +153,28 @@ double sampleBilinear(const ImageF& image, int c, double u, double v) {
     const double fy = std::floor(y);
     const double ax = x - fx;
     const double ay = y - fy;
-    auto texel = [&](double tx, double ty) {
-        const int ix = std::clamp(static_cast<int>(tx), 0, image.width - 1);
-        const int iy = std::clamp(static_cast<int>(ty), 0, image.height - 1);
-        return double(image.at(ix, iy, c));
-    };
-    return (1 - ax) * (1 - ay) * texel(fx, fy) + ax * (1 - ay) * texel(fx + 1, fy) +
-           (1 - ax) * ay * texel(fx, fy + 1) + ax * ay * texel(fx + 1, fy + 1);
+    const auto column = [&](double t) { return std::clamp(static_cast<int>(t), 0, image.width - 1); };
+    const auto row = [&](double t) { return std::clamp(static_cast<int>(t), 0, image.height - 1); };
+    const auto at = [&](int ix, int iy) { return (static_cast<std::size_t>(iy) * image.width + ix) * image.channels; };
+    const int x0 = column(fx), x1 = column(fx + 1), y0 = row(fy), y1 = row(fy + 1);
+    return {{at(x0, y0), at(x1, y0), at(x0, y1), at(x1, y1)},
+            {(1 - ax) * (1 - ay), ax * (1 - ay), (1 - ax) * ay, ax * ay}};
+}
+
+double sampleChannel(const ImageF& image, const BilinearTaps& taps, int c) {
+    const auto texel = [&](int k) { return double(image.data[taps.texel[k] + static_cast<std::size_t>(c)]); };
+    return taps.weight[0] * texel(0) + taps.weight[1] * texel(1) + taps.weight[2] * texel(2) + taps.weight[3] * texel(3);
+}
+
+} // namespace
+
+double sampleBilinear(const ImageF& image, int c, double u, double v) {
+    return sampleChannel(image, bilinearTaps(image, u, v), c);
 }
 
 Rgb sampleBilinear(const ImageF& image, double u, double v) {
-    return {sampleBilinear(image, 0, u, v), sampleBilinear(image, 1, u, v), sampleBilinear(image, 2, u, v)};
+    const BilinearTaps taps = bilinearTaps(image, u, v);
+    return {sampleChannel(image, taps, 0), sampleChannel(image, taps, 1), sampleChannel(image, taps, 2)};
 }
 
 ImageF bloomThreshold(const ImageF& accumulation, double threshold) {
@@ -233,7 +268,7 @@ FrameInputs::FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel
 namespace {
 
 // One pixel of the final pass under a variant; `sceneKey` is the Ya of the smallest level.
-Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double sceneKey, int x, int y) {
+Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double sceneKey, double sceneGrey, int x, int y) {
     const ImageF& acc = in.accumulation;
     const int w = acc.width;
     const int h = acc.height;
@@ -250,10 +285,12 @@ Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double scene
         for (int k = 0; k < 3; ++k) c[k] += s.bloomWeight * b[k];
     Rgb out = c;
     if (variant.toneMap) {
-        const double key = variant.keyLevel >= 0
-                               ? keyFromMapped(sampleBilinear((*in.levels)[std::size_t(variant.keyLevel)], 0, u, v), s, variant.unmap)
-                               : sceneKey;
-        out = toneMap(c, key, s);
+        if (variant.keyLevel >= 0) {
+            const double key = keyFromMapped(sampleBilinear((*in.levels)[std::size_t(variant.keyLevel)], 0, u, v), s, variant.unmap);
+            out = toneMap(c, key, s);
+        } else {
+            out = toneMap(c, sceneKey, sceneGrey, s);
+        }
     }
     if (variant.bloomAfterToneMap)
         for (int k = 0; k < 3; ++k) out[k] += s.bloomWeight * b[k];
@@ -263,8 +300,9 @@ Rgb frameColour(const FrameInputs& in, const FrameVariant& variant, double scene
 void colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey, std::vector<Rgb>& out, int step = 1) {
     const int w = in.accumulation.width;
     out.resize(std::size_t(w) * in.accumulation.height);
+    const double sceneGrey = middleGrey(sceneKey, variant.settings);
     for (int y = 0; y < in.accumulation.height; y += step)
-        for (int x = 0; x < w; x += step) out[std::size_t(y) * w + x] = frameColour(in, variant, sceneKey, x, y);
+        for (int x = 0; x < w; x += step) out[std::size_t(y) * w + x] = frameColour(in, variant, sceneKey, sceneGrey, x, y);
 }
 
 std::vector<Rgb> colours(const FrameInputs& in, const FrameVariant& variant, double sceneKey) {

@@ -1,6 +1,8 @@
 // The window's camera controls; see camera_input.hpp.
 #include "t10/camera_input.hpp"
 
+// Input only: no GL header from GLFW, which in a unity build would come before glad's.
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace t10 {

@@ -1,6 +1,8 @@
 // Edge-triggered keys; see keys.hpp.
 #include "t10/keys.hpp"
 
+// Input only: no GL header from GLFW, which in a unity build would come before glad's.
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace t10 {
