@@ -75,7 +75,6 @@ Rgb toneMap(const Rgb& colour, double sceneKey, double grey, const Settings& set
 } // namespace
 
 double toneMapLuminance(double y, double sceneKey, const Settings& settings) {
-    if (!(y > 0.0)) return 0.0;
     return toneMapLuminance(y, sceneKey, middleGrey(sceneKey, settings), settings);
 }
 
