@@ -114,10 +114,6 @@ PASS_WORDS = {"swapped_subroutines": [("pot.blur-passes", "first failing pass: p
               "full_res_offsets": [("pot.blur-passes", "first failing pass: pass 1 horizontal"), ("pot.blur", "exactly half")],
               **{name: [(f"{case}.blur-passes", "10 passes within tolerance") for case in ("pot", "npot", "extremes", "hot")]
                  + [("pot.blur-pass-count", "10 blur passes")] for name in ("reference3", "shaders3", "equivalent")}}
-# The reference's own frames are compared pixel for pixel, without starting FLIP (flip.cpp); a frame that
-# differs is measured by FLIP (every failing .flip check has its heat-map).
-for name in ("reference3", "shaders3"):
-    PASS_WORDS[name] += [(f"{case}.flip", "pixel for pixel (FLIP not run)") for case in ("pot", "npot")]
 KEYS = {"id", "steps", "passed", "measured", "tolerance", "diagnosis", "blames", "mistakes"}
 
 
