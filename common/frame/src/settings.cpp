@@ -4,6 +4,7 @@
 #include "t10/args.hpp"
 #include "t10/cli.hpp"
 #include "t10/cli_range.hpp"
+#include "t10/contract.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -23,6 +24,12 @@ void addRunOptions(CLI::App& cli, RunSettings& settings) {
         "Resize before each frame: WxH,WxH,... (for tests); each size follows the --size rule, and 0x0 stands for a "
         "minimised window (nothing is rendered, so a run whose last frame is 0x0 cannot write its outputs)");
     group->add_flag("--verbose,-v", settings.verbose, "Print the GL vendor, renderer and version, and frame times");
+#ifndef __EMSCRIPTEN__
+    // Split off by runStage before parsing (app.hpp): here for --help only.
+    group->add_flag(contract::kThenOption,
+                    "End this run's options: the options after it are another headless run in the same process and "
+                    "context, started after this run's outputs are written (t10-grade renders a submission's cases this way)");
+#endif
     group->callback([&settings, sequence, resize] {
         refuseEmpty({resize});
         if (!sequence->empty())

@@ -37,6 +37,12 @@ constexpr int kBlurPasses = 5; // horizontal + vertical pass pairs
 
 // extras/ (steps 37-40): uniform locations of its post-process shaders. The two programs share
 // locations 0 and 2; location 1 is the threshold in the luminance pass and the weight in the final one.
+// A stage's command line and t10-grade: --then separates the runs of one process (app.hpp), and
+// before each later run the stage prints a line starting with kThenMarker (then "N of M"), where
+// the grader splits the process's log into the cases' logs.
+constexpr const char* kThenOption = "--then";
+constexpr const char* kThenMarker = "t10: run ";
+
 namespace extras {
 constexpr int kWhitePointLocation = 0;     // both programs: float fYwhite
 constexpr int kRangeMappingLocation = 2;   // both programs: bool bRangeMapping

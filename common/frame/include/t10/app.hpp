@@ -116,6 +116,12 @@ private:
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).
+// `--then` starts another run of the stage in the same process and headless context after the
+// previous run's outputs are written, with options of its own (everything up to the next --then):
+// t10-grade renders all the cases of a submission in one process, since a process's start-up
+// (driver, LLVM's code for the scene's shaders, the scene) costs more than its small frames. Before
+// each later run the context gets that run's size and the GL state it started with (gl_defaults.hpp),
+// and contract::kThenMarker, the run's number and the count are printed on a line of their own.
 int runStage(int argc, const char* const* argv, const Stage& stage);
 
 } // namespace t10
