@@ -5,6 +5,7 @@
 
 #include "capture/cases.hpp"
 #include "intake/staging.hpp"
+#include "t10/contract.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -100,30 +101,73 @@ std::string writeNanProbe(const std::string& shaderDir, const std::string& probe
     return probeDir;
 }
 
-RunResult runCase(const SandboxRun& base, const fs::path& program, const std::string& shaderDir, const fs::path& inputs,
-                  const fs::path& work, const fs::path& dir, const std::vector<std::string>& args, bool capturePasses,
-                  const std::string& logFile) {
+namespace {
+
+// A case's arguments for the program: the case's own, the shader folder, where its outputs go.
+std::vector<std::string> caseArgv(const SandboxRun& run, const CaseRender& render, const std::string& shaderDir,
+                                  const std::string& outDir, bool capturePasses) {
+    std::vector<std::string> argv{"--headless", "--backend", "egl", "--frames", "1"};
+    for (const std::string& a : caseArgs(render.args, run.path("/t10/inputs"))) argv.push_back(a);
+    argv.insert(argv.end(), {"--shader-dir", run.path(shaderDir), "--dump", run.path(outDir), "--output",
+                             run.path(outDir + "/frame.png")});
+    // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
+    if (capturePasses) argv.insert(argv.end(), {"--capture-passes", run.path(outDir)});
+    return argv;
+}
+
+} // namespace
+
+RunResult runCases(const SandboxRun& base, const fs::path& program, const fs::path& inputs, const fs::path& work,
+                   const std::vector<CaseRender>& renders, bool capturePasses, const std::string& logFile) {
     const bool namespaces = base.isolation == Isolation::Namespaces;
     const std::string tmp = (work / "tmp").string();
     SandboxRun run = base;
     run.mounts.push_back({program.string(), "/t10/bin/student", false});
-    run.mounts.push_back({shaderDir, "/submission", false});
     run.mounts.push_back({inputs.string(), "/t10/inputs", false});
     run.mounts.push_back({(work / "mesa-cache").string(), "/mesa-cache", true});
-    run.mounts.push_back({dir.string(), "/out", true});
-    run.workingDirectory = "/out";
+    // One case: its output folder is /out and its shaders /submission. Several: each case's folder is
+    // /out/<id>, and a shader folder other than the first case's (the NaN probe's) is /<its name>.
+    const bool one = renders.size() == 1;
+    std::vector<std::string> shaderDirs;
+    for (const CaseRender& render : renders) {
+        std::string inside = "/submission";
+        if (render.shaderDir != renders.front().shaderDir) inside = "/" + fs::path(render.shaderDir).filename().string();
+        if (std::find(shaderDirs.begin(), shaderDirs.end(), inside) == shaderDirs.end())
+            run.mounts.push_back({render.shaderDir, inside, false});
+        shaderDirs.push_back(inside);
+        run.mounts.push_back({render.dir.string(), one ? "/out" : "/out/" + render.id, true});
+    }
+    run.workingDirectory = one ? "/out" : "/out/" + renders.front().id;
     // llvmpipe draws in the program's thread (kLlvmpipeSmallRenders): no threads of its own to count.
     run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "MESA_SHADER_CACHE_DIR=" + run.path("/mesa-cache"),
                "HOME=" + (namespaces ? std::string("/tmp") : tmp),
                "TMPDIR=" + (namespaces ? std::string("/tmp") : tmp)};
     run.env.insert(run.env.end(), kLlvmpipeSmallRenders.begin(), kLlvmpipeSmallRenders.end());
-    std::vector<std::string> argv{run.path("/t10/bin/student"), "--headless", "--backend", "egl", "--frames", "1"};
-    for (const std::string& a : caseArgs(args, run.path("/t10/inputs"))) argv.push_back(a);
-    argv.insert(argv.end(), {"--shader-dir", run.path("/submission"), "--dump", run.path("/out"), "--output",
-                             run.path("/out/frame.png")});
-    // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
-    if (capturePasses) argv.insert(argv.end(), {"--capture-passes", run.path("/out")});
+    std::vector<std::string> argv{run.path("/t10/bin/student")};
+    for (std::size_t i = 0; i < renders.size(); ++i) {
+        if (i > 0) argv.push_back(contract::kThenOption);
+        const std::vector<std::string> args =
+            caseArgv(run, renders[i], shaderDirs[i], one ? "/out" : "/out/" + renders[i].id, capturePasses);
+        argv.insert(argv.end(), args.begin(), args.end());
+    }
     return runSandboxed(run, argv, logFile);
+}
+
+std::vector<std::string> splitRunLog(const std::string& logFile, std::size_t runs) {
+    std::vector<std::string> parts(1);
+    std::ifstream in(logFile, std::ios::binary);
+    const std::string marker = contract::kThenMarker;
+    for (std::string line; std::getline(in, line);) {
+        // "t10: run N of M", N the next run's number: a line the program itself printed otherwise.
+        if (line.rfind(marker, 0) == 0 && parts.size() < runs &&
+            line == marker + std::to_string(parts.size() + 1) + " of " + std::to_string(runs)) {
+            parts.emplace_back();
+            continue;
+        }
+        parts.back() += line;
+        if (!in.eof()) parts.back() += '\n';
+    }
+    return parts;
 }
 
 // What a render left in its output folder, examined after every process of it is dead: "" when it is

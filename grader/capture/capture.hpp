@@ -10,13 +10,26 @@
 
 namespace t10::grade {
 
-// Runs `program` (the job's copy) headless for one frame in `base` (the job's sandbox) with the
-// shaders of `shaderDir`, the inputs of `inputs`, the job's Mesa cache and tmp under `work`, and the
-// case's `args`; it writes its dump and frame.png to `dir` (made by the caller, the job's own) and,
-// with `capturePasses` (Part 3), each blur pass. Its output goes to `logFile`.
-RunResult runCase(const SandboxRun& base, const std::filesystem::path& program, const std::string& shaderDir,
-                  const std::filesystem::path& inputs, const std::filesystem::path& work, const std::filesystem::path& dir,
-                  const std::vector<std::string>& args, bool capturePasses, const std::string& logFile);
+// One case of a render: what the program is asked and where its outputs go.
+struct CaseRender {
+    std::string id;                 // the case's (CaseSpec::id)
+    std::vector<std::string> args;  // the case's own arguments (CaseSpec::args)
+    std::string shaderDir;          // the submission's shaders (the private copy), or the NaN probe's
+    std::filesystem::path dir;      // its output folder, the job's own, made by the caller
+};
+
+// Runs `program` (the job's copy) headless in `base` (the job's sandbox), one frame of each of
+// `renders` in one process (the stage's --then), with the inputs of `inputs` and the job's Mesa
+// cache and tmp under `work`. Each case writes its dump and frame.png to its `dir` and, with
+// `capturePasses` (Part 3), each blur pass. The process's output goes to `logFile`. One case runs
+// exactly as a process of its own always did (its folder is /out, its shaders /submission).
+RunResult runCases(const SandboxRun& base, const std::filesystem::path& program, const std::filesystem::path& inputs,
+                   const std::filesystem::path& work, const std::vector<CaseRender>& renders, bool capturePasses,
+                   const std::string& logFile);
+
+// The log of a run of `runs` cases split where the program started each later case (its
+// contract::kThenMarker lines): one text per case that started, at most `runs`.
+std::vector<std::string> splitRunLog(const std::string& logFile, std::size_t runs);
 
 // The NaN probe: a copy of the submission's shaders (`shaderDir`, the private copy) in `probeDir`
 // whose PostProcess.frag paints every NaN output magenta. Returns `probeDir`, or "" when the shader's

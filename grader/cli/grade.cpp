@@ -86,7 +86,7 @@ PartFiles partFiles(int part) {
 // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
 // the report names them after the submission folder instead, as the student knows them.
 std::string studentPaths(std::string text, const fs::path& work, const std::string& submission) {
-    for (const std::string& prefix : {std::string("/submission/"), (work / "submission").string() + "/",
+    for (const std::string& prefix : {std::string("/submission/"), std::string("/nan-probe-shaders/"), (work / "submission").string() + "/",
                                       (work / "nan-probe-shaders").string() + "/"}) {
         for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
             text.replace(at, prefix.size(), submission + "/");
@@ -136,7 +136,8 @@ private:
     std::string buildSubmission(const Job& job, Report& report) const;
     fs::path stageProgram(const std::string& built, const Job& job) const;
     // Renders one case into `dir` (made here, for the job's uid) in the sandbox.
-    RunResult renderCase(const CaseSpec& spec, const Job& job, const fs::path& program, const fs::path& dir) const;
+    RunResult renderCases(const std::vector<CaseSpec>& specs, const Job& job, const fs::path& program) const;
+    static fs::path caseDir(const Job& job, const CaseSpec& spec) { return job.work / ("out-" + spec.id); }
     void reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const;
     bool captureCases(const Job& job, const fs::path& program, Report& report, std::vector<CaseRun>& runs) const;
     std::vector<Check> checkCase(const CaseSpec& spec, const CaseRun& run, const Job& job) const;
@@ -315,17 +316,24 @@ fs::path Grader::stageProgram(const std::string& built, const Job& job) const {
     return program;
 }
 
-RunResult Grader::renderCase(const CaseSpec& spec, const Job& job, const fs::path& program, const fs::path& dir) const {
-    const fs::path logs = job.out / "runs" / spec.id;
-    fs::create_directories(logs);
-    makeDir(dir, job.base.uid, 0700);
-    std::string shaderDir = job.shaders().string();
-    if (spec.id == "extremes") {
-        const std::string probe = writeNanProbe(job.shaders().string(), (job.work / "nan-probe-shaders").string());
-        if (!probe.empty()) shaderDir = probe;
+// The cases `specs` in one process (one case: a process of its own), logs in runs/<id>/run.log.
+RunResult Grader::renderCases(const std::vector<CaseSpec>& specs, const Job& job, const fs::path& program) const {
+    std::vector<CaseRender> renders;
+    for (const CaseSpec& spec : specs) {
+        const fs::path dir = caseDir(job, spec);
+        std::error_code error;
+        fs::remove_all(dir, error); // what an unfinished run of it left
+        makeDir(dir, job.base.uid, 0700);
+        std::string shaderDir = job.shaders().string();
+        if (spec.id == "extremes") {
+            const std::string probe = writeNanProbe(job.shaders().string(), (job.work / "nan-probe-shaders").string());
+            if (!probe.empty()) shaderDir = probe;
+        }
+        renders.push_back({spec.id, spec.args, shaderDir, dir});
     }
-    return runCase(job.base, program, shaderDir, publicInputs_, job.work, dir, spec.args, config_.part == 3,
-                   (logs / "run.log").string());
+    if (specs.size() == 1) fs::create_directories(job.out / "runs" / specs.front().id);
+    const fs::path log = specs.size() == 1 ? job.out / "runs" / specs.front().id / "run.log" : job.work / "cases.log";
+    return runCases(job.base, program, publicInputs_, job.work, renders, config_.part == 3, log.string());
 }
 
 void Grader::reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const {
@@ -345,15 +353,38 @@ void Grader::reportFailedRun(const CaseSpec& spec, const RunResult& result, cons
                      ". Its last output:\n" + studentPaths(lastLines(o, 30), job.work, report.submission);
 }
 
+// Every case in one process first (a process's start costs more than these small frames: about half
+// of a submission's render time). A case that process did not finish, and each one after it, is then
+// rendered alone, as it always was, so that a failure is the one that case's own process shows, with
+// that process's whole time limit. Only a first case that ran out of time is not rendered again: its
+// own process would have done exactly what this one did up to then.
 bool Grader::captureCases(const Job& job, const fs::path& program, Report& report, std::vector<CaseRun>& runs) const {
-    for (const CaseSpec& spec : cases(config_.part)) {
-        const fs::path dir = job.work / ("out-" + spec.id);
-        const RunResult result = renderCase(spec, job, program, dir);
-        if (!result.ok()) {
-            reportFailedRun(spec, result, job, report);
+    const std::vector<CaseSpec> specs = cases(config_.part);
+    const RunResult together = renderCases(specs, job, program);
+    const std::vector<std::string> logs = splitRunLog((job.work / "cases.log").string(), specs.size());
+    // Case i finished when case i + 1 started (its marker), the last one when the process ended well.
+    const std::size_t finished = together.ok() ? logs.size() : logs.size() - 1;
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        const CaseSpec& spec = specs[i];
+        const bool done = i < finished;
+        const bool firstTimedOut = i == 0 && !done && (together.timedOut || together.signal == SIGXCPU);
+        if (done || firstTimedOut) {
+            fs::create_directories(job.out / "runs" / spec.id);
+            std::ofstream(job.out / "runs" / spec.id / "run.log", std::ios::binary) << logs[i];
+        }
+        if (firstTimedOut) {
+            reportFailedRun(spec, together, job, report);
             return false;
         }
+        if (!done) {
+            const RunResult alone = renderCases({spec}, job, program);
+            if (!alone.ok()) {
+                reportFailedRun(spec, alone, job, report);
+                return false;
+            }
+        }
         // Its outputs, as hostile files: every process of the run is dead, so they cannot change now.
+        const fs::path dir = caseDir(job, spec);
         std::string fault = checkOutputs(dir);
         if (fault.empty()) fault = checkFrame((dir / "frame.png").string(), spec.width, spec.height);
         if (!fault.empty()) {
@@ -390,7 +421,7 @@ std::vector<Check> Grader::checkCase(const CaseSpec& spec, const CaseRun& run, c
     }
     if (spec.camera) {
         Check flip = flipCheck(config_.part, run, referenceDir_ + "/" + spec.id + "/frame.png",
-                               (job.work / ("out-" + spec.id) / "frame.png").string(), job.out.string(), checks);
+                               (caseDir(job, spec) / "frame.png").string(), job.out.string(), checks);
         // FLIP sees what a buffer check of the same case already blamed: it costs nothing more. Alone,
         // every buffer is right and the frame is not: it costs the steps that make the frame.
         const bool buffersFailed = std::any_of(checks.begin(), checks.end(), [](const Check& c) { return !c.passed; });

@@ -72,6 +72,8 @@ EXPECTED = {
     "shader_bytes": ("shader-error", []),
     "crash": ("crashed", []),
     "loop": ("timeout", []),
+    "crash_npot": ("crashed", []),
+    "loop_npot": ("timeout", []),
 }
 # The fitted batch: the id named, with the value set (make_submissions.FITTED).
 for _name, (_id, _parameter, _value, _file, _changes) in FITTED.items():
@@ -93,18 +95,24 @@ FIXTURE_VALUES = {"white_point": ("white-point", 0.25), "threshold": ("bloom-thr
 MESSAGES = {"no_compile": ["no_compile/Tutorial10.cpp:", "error: expected"],
             "shader_error": ["shader_error/PostProcess.frag", "shader compilation failed"],
             "shader_bytes": ["shader_bytes/PostProcess.frag", "shader compilation failed", "caf\ufffd"],
-            "crash": ["signal 11", "caf\ufffd \ufffd\ufffd \x01\x07\x1b[0m <i>&lt;</i>"], "loop": [f"timed out after {os.environ.get('T10_GRADE_LOOP_TIMEOUT', '3')} s"]}
+            "crash": ["signal 11", "caf\ufffd \ufffd\ufffd \x01\x07\x1b[0m <i>&lt;</i>"], "loop": [f"timed out after {os.environ.get('T10_GRADE_LOOP_TIMEOUT', '3')} s"],
+            # Their second case fails: reported as that case's own process failed (make_submissions.LATER).
+            "crash_npot": ["case npot", "signal 11"],
+            "loop_npot": ["case npot", f"timed out after {os.environ.get('T10_GRADE_LOOP_TIMEOUT', '3')} s"]}
 # What fix_first must say for a submission that was not graded: the first compiler or shader error
 # with its file (relative to the submission) and line, else the first line of what happened.
 FIX_FIRST = {"no_compile": r"^fix first: Tutorial10\.cpp:\d+: error: expected",
              "shader_error": r"^fix first: PostProcess\.frag:\d+: error: syntax error",
              "shader_bytes": r"^fix first: PostProcess\.frag:\d+: (preprocessor )?error: .*caf\ufffd",
-             "crash": r"^fix first: case \w+ .*signal 11", "loop": r"^fix first: \S"}
+             "crash": r"^fix first: case \w+ .*signal 11", "loop": r"^fix first: \S",
+             "crash_npot": r"^fix first: case npot .*signal 11", "loop_npot": r"^fix first: case npot .*timed out"}
 # In a sanitized build (make test-asan) UBSan stops the crash submission's null store before the signal:
 # its report, then exit 1, is what the student reads (tests.cmake sets T10_GRADE_SANITIZED there).
 if os.environ.get("T10_GRADE_SANITIZED") == "1":
     MESSAGES["crash"] = ["runtime error: store to null pointer", "caf\ufffd"]
     FIX_FIRST["crash"] = r"^fix first: case \w+ .*exit code 1"
+    MESSAGES["crash_npot"] = ["case npot", "runtime error: store to null pointer"]
+    FIX_FIRST["crash_npot"] = r"^fix first: case npot .*exit code 1"
 # Host folders a student-facing report must not name: the source tree and the tests' output tree.
 SOURCE_ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 # Per-pass checks (the capture of each blur pass): what their measurement or diagnosis must say.

@@ -66,6 +66,16 @@ MISTAKES = {
     "loop": (HOST, [("void GL_Render(t10::App& app)\n{", "void GL_Render(t10::App& app)\n{\n    volatile bool bWait = true;\n    while (bWait) {}\n")]),
 }
 
+# Failures of a later case only (part3-later, graded with the loop under its short limit, not in the
+# batches): t10-grade renders every case in one process, then a case that process did not finish
+# alone, so the report must name the case that failed, with its own process's time limit.
+LATER = {
+    "crash_npot": (HOST, [("void GL_Render(t10::App& app)\n{", "void GL_Render(t10::App& app)\n{\n"
+                          "    if (app.width() != app.height()) {\n        volatile int* piNull = nullptr;\n        *piNull = 42;\n    }\n")]),
+    "loop_npot": (HOST, [("void GL_Render(t10::App& app)\n{", "void GL_Render(t10::App& app)\n{\n"
+                         "    volatile bool bWait = app.width() != app.height();\n    while (bWait) {}\n")]),
+}
+
 
 # The fitted batch: name -> (catalogue id, parameter, value set, file, [(old, new), ...]) on Part 3.
 # check_reports.py reads this table: the id must be named with its value measured within 10 %.
@@ -184,7 +194,7 @@ FAIR = [
 ]
 
 
-def write_mutant(source, out, part, name, file, changes):
+def write_mutant(source, out, part, name, file, changes, folder_name=None):
     with open(os.path.join(source, STAGES[part], file), encoding="utf-8") as f:
         text = f.read()
     for old, new in changes:
@@ -192,7 +202,7 @@ def write_mutant(source, out, part, name, file, changes):
             print(f"make_submissions.py: {name}: '{old}' not found in {STAGES[part]}/{file}", file=sys.stderr)
             return False
         text = text.replace(old, new)
-    folder = os.path.join(out, f"part{part}", name)
+    folder = os.path.join(out, folder_name or f"part{part}", name)
     os.makedirs(folder)
     with open(os.path.join(folder, file), "w", encoding="utf-8") as f:
         f.write(text)
@@ -241,6 +251,9 @@ def main():
     batches += [(part, name, "PostProcess.frag", changes) for part, table in UNNAMED.items() for name, changes in table.items()]
     for part, name, file, changes in batches:
         if not write_mutant(source, out, part, name, file, changes):
+            return 1
+    for name, (file, changes) in LATER.items():
+        if not write_mutant(source, out, 3, name, file, changes, "part3-later"):
             return 1
     print(f"wrote the test submissions into {out}")
     return 0

@@ -65,13 +65,17 @@ foreach(part 1 2 3)
                          SKIP_RETURN_CODE 77 ENVIRONMENT "T10_GRADE_SANITIZED=${GRADE_SANITIZED}")
 endforeach()
 
+# With it, a crash and a loop in the second case only (make_submissions.LATER): t10-grade renders the
+# cases in one process, then the case it did not finish alone; the report must name that case (npot)
+# and its own limit. Shown to fail when the failure is put on the first case instead ("case npot"
+# missing from both messages).
 add_test(NAME "grade: an endless loop is stopped at the time limit"
-         COMMAND ${GRADE_RUN} --part 3 --timeout ${GRADE_LOOP_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/loop
-                 ${GRADE_SUBMISSIONS}/part3/loop)
+         COMMAND ${GRADE_RUN} --part 3 --jobs 2 --timeout ${GRADE_LOOP_TIMEOUT} --fill-from-reference all --report ${GRADE_REPORTS}/loop
+                 ${GRADE_SUBMISSIONS}/part3/loop ${GRADE_SUBMISSIONS}/part3-later/crash_npot ${GRADE_SUBMISSIONS}/part3-later/loop_npot)
 set_tests_properties("grade: an endless loop is stopped at the time limit" PROPERTIES
                      FIXTURES_SETUP grade_loop FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77)
 add_test(NAME "grade: the endless loop's report says timeout"
-         COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/loop loop)
+         COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/loop loop crash_npot loop_npot)
 set_tests_properties("grade: the endless loop's report says timeout" PROPERTIES FIXTURES_REQUIRED grade_loop
                      SKIP_RETURN_CODE 77 ENVIRONMENT "T10_GRADE_LOOP_TIMEOUT=${GRADE_LOOP_TIMEOUT}")
 
