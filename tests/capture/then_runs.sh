@@ -6,9 +6,10 @@
 # order, and fails on any file that differs (blur_passes.txt compared without its GL program name,
 # which counts the objects made before). The frame of the first case must differ from the second's, so
 # the comparison is shown to see a difference. Also: the log's run markers, and --then refused with
-# another backend. usage: then_runs.sh STAGE_BINARY MAKE_TEST_IMAGES OUT_DIR
+# another backend, and in extras (whose own options the runs would share). usage:
+# then_runs.sh STAGE_BINARY MAKE_TEST_IMAGES EXTRAS_BINARY OUT_DIR
 set -u
-stage=$1 make_images=$2 out=$3
+stage=$1 make_images=$2 extras=$3 out=$4
 rm -rf "$out" && mkdir -p "$out/inputs" || exit 1
 "$make_images" "$out/inputs" >/dev/null || { echo "FAIL: $make_images"; exit 1; }
 export GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 LP_NUM_THREADS=0 MESA_SHADER_CACHE_DISABLE=true
@@ -61,5 +62,9 @@ done
 code=$?
 [ $code -eq 2 ] && grep -q -- "--then: run 2 asks for another --backend" "$out/refused.log" ||
     { echo "FAIL: --then with another backend: exit $code, said:"; cat "$out/refused.log"; exit 1; }
+"$extras" --headless --backend egl --frames 1 --then --blur-passes 0 >"$out/extras.log" 2>&1
+code=$?
+[ $code -eq 2 ] && grep -q -- "has options of its own" "$out/extras.log" ||
+    { echo "FAIL: --then in extras: exit $code, said:"; cat "$out/extras.log"; exit 1; }
 [ "$differ" -eq 0 ] || exit 1
 echo "$files files (frames, buffers, blur passes) of four cases identical alone, in one process, and in one process in reverse order"

@@ -342,6 +342,10 @@ int runStage(int argc, const char* const* argv, const Stage& stage) {
 #ifdef T10_GL_DEBUG
         contextOptions.debug = true;
 #endif
+        // A stage's own options set its globals (extras/): a later run would inherit what an earlier one set.
+        if (runs.size() > 1 && stage.addOptions)
+            throw UsageError(std::string(contract::kThenOption) + ": " + stage.name +
+                             " has options of its own, which the runs would share: run it once per run");
         for (std::size_t i = 1; i < runs.size(); ++i) {
             const ContextOptions& later = settings[i].context;
             if (later.backend != contextOptions.backend || later.headless != contextOptions.headless)
