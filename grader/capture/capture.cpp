@@ -159,8 +159,7 @@ std::vector<std::string> splitRunLog(const std::string& logFile, std::size_t run
     const std::string marker = contract::kThenMarker;
     for (std::string line; std::getline(in, line);) {
         // "t10: run N of M", N the next run's number: a line the program itself printed otherwise.
-        if (line.rfind(marker, 0) == 0 && parts.size() < runs &&
-            line == marker + std::to_string(parts.size() + 1) + " of " + std::to_string(runs)) {
+        if (parts.size() < runs && line == marker + std::to_string(parts.size() + 1) + " of " + std::to_string(runs)) {
             parts.emplace_back();
             continue;
         }

@@ -86,8 +86,8 @@ PartFiles partFiles(int part) {
 // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
 // the report names them after the submission folder instead, as the student knows them.
 std::string studentPaths(std::string text, const fs::path& work, const std::string& submission) {
-    for (const std::string& prefix : {std::string("/submission/"), std::string("/nan-probe-shaders/"), (work / "submission").string() + "/",
-                                      (work / "nan-probe-shaders").string() + "/"}) {
+    for (const std::string& prefix : {std::string("/submission/"), std::string("/nan-probe-shaders/"),
+                                      (work / "submission").string() + "/", (work / "nan-probe-shaders").string() + "/"}) {
         for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
             text.replace(at, prefix.size(), submission + "/");
             at += submission.size() + 1;
@@ -135,7 +135,7 @@ private:
     bool copyIn(const std::string& submission, const Job& job, Report& report) const;
     std::string buildSubmission(const Job& job, Report& report) const;
     fs::path stageProgram(const std::string& built, const Job& job) const;
-    // Renders one case into `dir` (made here, for the job's uid) in the sandbox.
+    // Renders `specs` in one process in the sandbox, each into caseDir() (made here, for the job's uid).
     RunResult renderCases(const std::vector<CaseSpec>& specs, const Job& job, const fs::path& program) const;
     static fs::path caseDir(const Job& job, const CaseSpec& spec) { return job.work / ("out-" + spec.id); }
     void reportFailedRun(const CaseSpec& spec, const RunResult& result, const Job& job, Report& report) const;
