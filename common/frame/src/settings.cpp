@@ -13,7 +13,7 @@
 
 namespace t10 {
 
-void addRunOptions(CLI::App& cli, RunSettings& settings) {
+void addRunOptions(CLI::App& cli, RunSettings& settings, [[maybe_unused]] bool then) {
     auto sequence = std::make_shared<std::string>(); // the text, owned by the group's callback
     CLI::Option_group* group = cli.add_option_group("Run", "How many frames, at which sizes");
     group->add_option("--frames", settings.frames,
@@ -26,9 +26,11 @@ void addRunOptions(CLI::App& cli, RunSettings& settings) {
     group->add_flag("--verbose,-v", settings.verbose, "Print the GL vendor, renderer and version, and frame times");
 #ifndef __EMSCRIPTEN__
     // Split off by runStage before parsing (app.hpp): here for --help only.
-    group->add_flag(contract::kThenOption,
-                    "End this run's options: the options after it are another headless run in the same process and "
-                    "context, started after this run's outputs are written (t10-grade renders a submission's cases this way)");
+    if (then)
+        group->add_flag(contract::kThenOption,
+                        "End this run's options: the options after it are another headless run in the same process "
+                        "and context, started after this run's outputs are written (t10-grade renders a submission's "
+                        "cases this way)");
 #endif
     group->callback([&settings, sequence, resize] {
         refuseEmpty({resize});
@@ -39,7 +41,7 @@ void addRunOptions(CLI::App& cli, RunSettings& settings) {
 
 void addSettingsOptions(CLI::App& cli, Settings& settings, const AddOptionsHook& stageOptions) {
     addContextOptions(cli, settings.context);
-    addRunOptions(cli, settings.run);
+    addRunOptions(cli, settings.run, !stageOptions); // runStage refuses --then where a stage has options
     addSceneOptions(cli, settings.scene);
     addOutputOptions(cli, settings.outputs);
     addViewOptions(cli, settings.views);

@@ -30,8 +30,8 @@ struct Settings {
     BenchSettings bench;
 };
 
-// Adds the "Run" group to `cli`.
-void addRunOptions(CLI::App& cli, RunSettings& settings);
+// Adds the "Run" group to `cli`; with `then`, --then in its help (a stage without options of its own).
+void addRunOptions(CLI::App& cli, RunSettings& settings, bool then);
 
 // Adds every service's group and the stage's own options (may be empty) to `cli`, bound to
 // `settings`: the command line's options, and the list a web page offers (App::webOptions).
