@@ -31,6 +31,10 @@ RunResult runCases(const SandboxRun& base, const std::filesystem::path& program,
 // contract::kThenMarker lines): one text per case that started, at most `runs`.
 std::vector<std::string> splitRunLog(const std::string& logFile, std::size_t runs);
 
+// The folder of the job's work folder that holds the NaN probe's shaders (writeNanProbe); in a
+// render of several cases it is mounted at /<this name> (runCases).
+inline constexpr const char* kNanProbeFolder = "nan-probe-shaders";
+
 // The NaN probe: a copy of the submission's shaders (`shaderDir`, the private copy) in `probeDir`
 // whose PostProcess.frag paints every NaN output magenta. Returns `probeDir`, or "" when the shader's
 // main() or its vec3/vec4 output cannot be found (the case then runs unprobed).

@@ -86,8 +86,8 @@ PartFiles partFiles(int part) {
 // Tools name the submission's files by their paths in the sandbox (or the grader's private copy):
 // the report names them after the submission folder instead, as the student knows them.
 std::string studentPaths(std::string text, const fs::path& work, const std::string& submission) {
-    for (const std::string& prefix : {std::string("/submission/"), std::string("/nan-probe-shaders/"),
-                                      (work / "submission").string() + "/", (work / "nan-probe-shaders").string() + "/"}) {
+    for (const std::string& prefix : {std::string("/submission/"), "/" + std::string(kNanProbeFolder) + "/",
+                                      (work / "submission").string() + "/", (work / kNanProbeFolder).string() + "/"}) {
         for (auto at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) {
             text.replace(at, prefix.size(), submission + "/");
             at += submission.size() + 1;
@@ -326,7 +326,7 @@ RunResult Grader::renderCases(const std::vector<CaseSpec>& specs, const Job& job
         makeDir(dir, job.base.uid, 0700);
         std::string shaderDir = job.shaders().string();
         if (spec.id == "extremes") {
-            const std::string probe = writeNanProbe(job.shaders().string(), (job.work / "nan-probe-shaders").string());
+            const std::string probe = writeNanProbe(job.shaders().string(), (job.work / kNanProbeFolder).string());
             if (!probe.empty()) shaderDir = probe;
         }
         renders.push_back({spec.id, spec.args, shaderDir, dir});

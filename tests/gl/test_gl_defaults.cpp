@@ -44,7 +44,8 @@ Probe enabled(GLenum capability, const char* name) {
 Probe ints(GLenum what, const char* name, std::function<void()> change) { return {name, [what] { return getInts(what); }, std::move(change)}; }
 Probe floats(GLenum what, const char* name, std::function<void()> change) { return {name, [what] { return getFloats(what); }, std::move(change)}; }
 
-std::vector<Probe> probes() {
+// `texture` and `buffer`: objects the binding probes bind (made by the test, deleted after it).
+std::vector<Probe> probes(GLuint texture, GLuint buffer) {
     std::vector<Probe> list{
         enabled(GL_BLEND, "GL_BLEND"), enabled(GL_CULL_FACE, "GL_CULL_FACE"), enabled(GL_DEPTH_TEST, "GL_DEPTH_TEST"),
         enabled(GL_SCISSOR_TEST, "GL_SCISSOR_TEST"), enabled(GL_STENCIL_TEST, "GL_STENCIL_TEST"),
@@ -89,8 +90,6 @@ std::vector<Probe> probes() {
         ints(GL_READ_BUFFER, "GL_READ_BUFFER", [] { glReadBuffer(GL_NONE); }),
     };
     // Objects bound: a texture on unit 15 (the accumulation's), a buffer on uniform binding 7.
-    static GLuint texture = 0;
-    static GLuint buffer = 0;
     list.push_back({"GL_TEXTURE_BINDING_2D on unit 15",
                     [] {
                         GLint active = 0;
@@ -100,10 +99,9 @@ std::vector<Probe> probes() {
                         glActiveTexture(GLenum(active));
                         return v;
                     },
-                    [] {
+                    [texture] {
                         GLint active = 0;
                         glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-                        if (texture == 0) glGenTextures(1, &texture);
                         glActiveTexture(GL_TEXTURE15);
                         glBindTexture(GL_TEXTURE_2D, texture);
                         glActiveTexture(GLenum(active));
@@ -114,14 +112,8 @@ std::vector<Probe> probes() {
                         glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 7, v.data());
                         return v;
                     },
-                    [] {
-                        if (buffer == 0) glGenBuffers(1, &buffer);
-                        glBindBufferBase(GL_UNIFORM_BUFFER, 7, buffer);
-                    }});
-    list.push_back(ints(GL_ARRAY_BUFFER_BINDING, "GL_ARRAY_BUFFER_BINDING", [] {
-        if (buffer == 0) glGenBuffers(1, &buffer);
-        glBindBuffer(GL_ARRAY_BUFFER, buffer);
-    }));
+                    [buffer] { glBindBufferBase(GL_UNIFORM_BUFFER, 7, buffer); }});
+    list.push_back(ints(GL_ARRAY_BUFFER_BINDING, "GL_ARRAY_BUFFER_BINDING", [buffer] { glBindBuffer(GL_ARRAY_BUFFER, buffer); }));
     return list;
 }
 
@@ -133,7 +125,11 @@ TEST_CASE("restoreGlDefaults gives back every state a new context starts with", 
     int height = 0;
     context->framebufferSize(width, height);
     const t10::GlDefaults defaults = t10::readGlDefaults();
-    const std::vector<Probe> list = probes();
+    GLuint texture = 0;
+    GLuint buffer = 0;
+    glGenTextures(1, &texture);
+    glGenBuffers(1, &buffer);
+    const std::vector<Probe> list = probes(texture, buffer);
     std::vector<std::array<GLint, 4>> initial;
     for (const Probe& probe : list) initial.push_back(probe.read());
     for (const Probe& probe : list) probe.change();
@@ -147,4 +143,6 @@ TEST_CASE("restoreGlDefaults gives back every state a new context starts with", 
         CHECK(list[i].read() == initial[i]);
     }
     CHECK(glGetError() == GL_NO_ERROR);
+    glDeleteBuffers(1, &buffer);
+    glDeleteTextures(1, &texture);
 }
