@@ -39,7 +39,11 @@ HostKit loadHostKit() {
         else if (key == "includes") kit.includes = splitList(value);
         else if (key == "defines") kit.defines = splitList(value);
         else if (key == "libs") kit.libs = splitList(value);
+        else if (key == "pch") kit.pch = value;
     }
+    // A kit whose header was not precompiled (a build that stopped before it) builds without it.
+    std::error_code error;
+    if (!kit.pch.empty() && !fs::is_regular_file(fs::path(kit.pch) / "t10" / "app.hpp.gch", error)) kit.pch.clear();
     if (kit.compiler.empty()) throw Error(std::string(T10_GRADE_HOST_KIT) + ": no compiler line");
     return kit;
 }
@@ -51,6 +55,7 @@ std::vector<Mount> projectMounts(const HostKit& kit) {
         const std::string inside = "/t10/include/" + std::to_string(i);
         mounts.push_back({kit.includes[i], inside, false});
     }
+    if (!kit.pch.empty()) mounts.push_back({kit.pch, kPchInside, false});
     for (std::size_t i = 0; i < kit.libs.size(); ++i) {
         const std::string& lib = kit.libs[i];
         if (lib.empty() || lib[0] != '/' || lib.rfind("/usr/", 0) == 0) continue;
@@ -74,10 +79,12 @@ std::string buildProgram(const HostKit& kit, const std::string& stage, const std
     // rebuilt common/ must not leave stale programs in the cache). Every part is built the same way:
     // Part 3's blur passes are recorded at run time by the frame loop's capture hook (--capture-passes).
     std::string key = kit.text + stage + readFile(source) + "sandbox layout 2 " + isolationName(sandbox.isolation);
-    for (const std::string& lib : kit.libs) {
+    std::vector<std::string> inputs = kit.libs;
+    if (!kit.pch.empty()) inputs.push_back((fs::path(kit.pch) / "t10" / "app.hpp.gch").string());
+    for (const std::string& file : inputs) {
         std::error_code error;
-        const auto time = fs::last_write_time(lib, error);
-        if (!error) key += lib + std::to_string(time.time_since_epoch().count());
+        const auto time = fs::last_write_time(file, error);
+        if (!error) key += file + std::to_string(time.time_since_epoch().count());
     }
     const fs::path dir = fs::absolute(cacheDir) / "builds" / hashOf(key);
     const std::string program = (dir / "student").string();
@@ -100,6 +107,9 @@ std::string buildProgram(const HostKit& kit, const std::string& stage, const std
 
     std::vector<std::string> argv{kit.compiler};
     argv.insert(argv.end(), kit.flags.begin(), kit.flags.end());
+    // First: GCC takes t10/app.hpp.gch there for the stage's first include when it fits this call,
+    // and otherwise goes on to the headers themselves. -Winvalid-pch says so in the build's log.
+    if (!kit.pch.empty()) argv.insert(argv.end(), {"-Winvalid-pch", "-I" + run.path(kPchInside)});
     for (std::size_t i = 0; i < kit.includes.size(); ++i) argv.push_back("-I" + run.path("/t10/include/" + std::to_string(i)));
     for (const std::string& define : kit.defines) argv.push_back("-D" + define);
     argv.push_back(std::string("-DT10_STAGE_NAME=\"") + stage + "\"");

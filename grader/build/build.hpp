@@ -14,16 +14,21 @@ namespace t10::grade {
 struct HostKit {
     std::string compiler;
     std::vector<std::string> flags, includes, defines, libs;
+    // The folder of the precompiled t10/app.hpp (t10/app.hpp.gch); empty where the kit names none.
+    std::string pch;
     std::string text;
 };
 
 // Reads T10_GRADE_HOST_KIT; throws t10::Error when it cannot be read or names no compiler.
 HostKit loadHostKit();
 
-// The project's files the kit names, read-only, for a sandbox: include folders at /t10/include/N and
-// the project's libraries at /t10/lib/N-NAME (host paths do not show inside); the common shaders and
-// assets at their host paths, which the project's libraries have compiled in.
+// The project's files the kit names, read-only, for a sandbox: include folders at /t10/include/N, the
+// precompiled header's folder at kPchInside and the project's libraries at /t10/lib/N-NAME (host paths
+// do not show inside); the common shaders and assets at their host paths, which the project's
+// libraries have compiled in.
 std::vector<Mount> projectMounts(const HostKit& kit);
+// Where the kit's precompiled header folder is inside a sandbox; a build searches it first.
+inline constexpr const char* kPchInside = "/t10/pch";
 
 // The limits of one build: a compiler call of a stage takes seconds, never minutes.
 constexpr SandboxLimits kBuildLimits{300.0, 300, 4096, 256, 256, 64, 512};

@@ -65,6 +65,15 @@ foreach(part 1 2 3)
                          SKIP_RETURN_CODE 77 ENVIRONMENT "T10_GRADE_SANITIZED=${GRADE_SANITIZED}")
 endforeach()
 
+# The builds of that batch took the precompiled t10/app.hpp (grader/CMakeLists.txt): else each parses
+# common/'s headers again, the same program 0.7 s of CPU later. Shown to fail with a header precompiled
+# at -O1: "not used because `__OPTIMIZE__' not defined", in the kit's compile and in each build's log.
+add_test(NAME "grade: the builds of submissions take the precompiled t10/app.hpp"
+         COMMAND ${GRADE_TESTS}/run_grader.sh ${T10_GRADE_VENV}/bin/flip ${Python3_EXECUTABLE} ${GRADE_TESTS}/precompiled_check.py
+                 ${T10_GRADE_HOST_KIT} ${PROJECT_SOURCE_DIR} ${PROJECT_BINARY_DIR}/grade-cache/builds)
+set_tests_properties("grade: the builds of submissions take the precompiled t10/app.hpp" PROPERTIES
+                     FIXTURES_REQUIRED grade_part3 SKIP_RETURN_CODE 77)
+
 # With it, a crash and a loop in the second case only (make_submissions.LATER): t10-grade renders the
 # cases in one process, then the case it did not finish alone; the report must name that case (npot)
 # and its own limit. Shown to fail when the failure is put on the first case instead ("case npot"
