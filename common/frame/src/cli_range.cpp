@@ -11,7 +11,7 @@ namespace t10 {
 namespace {
 
 // "0.05", "2", "2.95": numbers as a person writes them.
-std::string number(double value) {
+std::string asWritten(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
     return text;
@@ -20,7 +20,7 @@ std::string number(double value) {
 } // namespace
 
 CLI::Validator inRange(double lo, double hi, bool integer) {
-    const std::string range = "from " + number(lo) + " to " + number(hi);
+    const std::string range = "from " + asWritten(lo) + " to " + asWritten(hi);
     return CLI::Validator(
         [lo, hi, integer, range](std::string& text) -> std::string {
             std::size_t used = 0;
