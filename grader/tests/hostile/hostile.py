@@ -276,17 +276,29 @@ def write_submission(name, host, frag, init=REF_INIT):
     return folder
 
 
+# The attacks' code goes after the stage's first include, so that their builds take the grader's
+# precompiled t10/app.hpp as a stage's do (0.1 s of CPU each instead of 0.8); include_secret's
+# #include lines stay first, so one build reads the headers themselves.
+FIRST_INCLUDE = '#include "t10/app.hpp"\n'
+assert FIRST_INCLUDE in REF_HOST, "the Part 1 reference changed its first include: update hostile.py"
+
+
+def after_first_include(host, text):
+    at = host.index(FIRST_INCLUDE) + len(FIRST_INCLUDE)
+    return host[:at] + text + host[at:]
+
+
 def hostile_host(prefix, after):
     host = REF_HOST
-    if prefix:
-        host = PRELUDE + prefix + host if prefix.startswith("namespace") else prefix + PRELUDE + host
+    if prefix and not prefix.startswith("namespace"):
+        host = prefix + PRELUDE + host
     else:
-        host = PRELUDE + host
+        host = after_first_include(host, PRELUDE + (prefix or ""))
     if after:
         body, needs_vector = after
         host = host.replace(RUN_STAGE, body.strip())
         if needs_vector:
-            host = "#include <vector>\n" + host
+            host = after_first_include(host, "#include <vector>\n")
     return host
 
 
