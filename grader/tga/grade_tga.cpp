@@ -313,8 +313,9 @@ Outcome runCase(const Job& job, const Case& c, int index, double timeout) {
 }
 
 // The kit the loader is built with, copied into the grader's work folder so that the job's uid can
-// read it wherever the checkout lies: the harness, the headers a loader may include (t10/image.hpp,
-// t10/error.hpp, t10/file.hpp, t10/tga.hpp) and t10::readFile's source. Nothing else of the project.
+// read it wherever the checkout lies: the headers a loader may include (t10/image.hpp, t10/error.hpp,
+// t10/file.hpp, t10/tga.hpp), and the harness and t10::readFile compiled by the project's build
+// (grader/CMakeLists.txt, T10_GRADE_TGA_KIT). Nothing else of the project.
 void stageKit(const fs::path& kit) {
     const fs::path source = T10_GRADE_TGA_SOURCE_DIR;
     makeDir(kit, 0, 0755);
@@ -324,8 +325,7 @@ void stageKit(const fs::path& kit) {
                                "content/include/t10/tga.hpp"}) {
         writeBytes(kit / "include" / "t10" / fs::path(header).filename(), readBytes(source / "common" / header));
     }
-    writeBytes(kit / "file.cpp", readBytes(source / "common/base/src/file.cpp"));
-    writeBytes(kit / "tga_harness.cpp", readBytes(T10_GRADE_TGA_HARNESS));
+    for (const char* object : {"file.o", "tga_harness.o"}) writeBytes(kit / object, readBytes(fs::path(T10_GRADE_TGA_KIT) / object));
 }
 
 // Builds the copied tga.cpp with the kit in the sandbox; false with the compiler's words in `log`.
@@ -340,8 +340,8 @@ bool buildLoader(Job& job, const fs::path& copied, std::string& log) {
     const std::string home = run.isolation == Isolation::Namespaces ? "/tmp" : out.string();
     run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "HOME=" + home, "TMPDIR=" + home};
     const RunResult result = runSandboxed(run, {T10_GRADE_TGA_COMPILER, "-std=c++17", "-O0", "-g0", "-I" + run.path("/t10/kit/include"),
-                                                run.path("/submission/tga.cpp"), run.path("/t10/kit/tga_harness.cpp"),
-                                                run.path("/t10/kit/file.cpp"), "-o", run.path("/out/loader")},
+                                                run.path("/submission/tga.cpp"), run.path("/t10/kit/tga_harness.o"),
+                                                run.path("/t10/kit/file.o"), "-o", run.path("/out/loader")},
                                           (job.work / "logs" / "build.log").string());
     // The compiler names the submission's file by its path inside: the student knows it as tga.cpp.
     log = result.output;
