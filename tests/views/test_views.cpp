@@ -14,9 +14,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <unordered_map>
 
 namespace {
 
@@ -52,6 +54,12 @@ double decodeScale(const Image8& image, int x, int y) {
         }
         return table;
     }();
+    // A view has a few hundred colours among its ~14,000 pixels: each colour is searched once (the
+    // search over every sample, unoptimised in a debug build, cost make test about 5 CPU-seconds).
+    static std::unordered_map<std::uint32_t, double> decoded;
+    const std::uint32_t key = std::uint32_t(image.at(x, y, 0)) << 16 | std::uint32_t(image.at(x, y, 1)) << 8 | image.at(x, y, 2);
+    if (const auto found = decoded.find(key); found != decoded.end())
+        return found->second;
     long best = -1;
     std::size_t bestIndex = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -65,7 +73,7 @@ double decodeScale(const Image8& image, int x, int y) {
             bestIndex = i;
         }
     }
-    return static_cast<double>(bestIndex) / (6.0 * 1024.0);
+    return decoded[key] = static_cast<double>(bestIndex) / (6.0 * 1024.0);
 }
 
 std::string readText(const std::string& path) {

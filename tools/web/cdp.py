@@ -253,8 +253,12 @@ def wait_until(read, done, timeout, what, describe=lambda value: "", interval=0.
 
 
 def screenshot(browser, session, path, clip=None, timeout=90):
-    """The viewport, or the page's region `clip` ({x, y, width, height} in page pixels), as a PNG."""
-    params = {"format": "png", "fromSurface": True}
+    """The viewport, or the page's region `clip` ({x, y, width, height} in page pixels), as a PNG, or
+    as a JPEG (quality 85) where `path` ends in .jpg or .jpeg: Chromium encodes a 1280x32000 page in
+    about 1 s as a JPEG and 3-4 s as a PNG, on one core."""
+    jpeg = path.lower().endswith((".jpg", ".jpeg"))
+    params = {"format": "jpeg", "quality": 85} if jpeg else {"format": "png"}
+    params["fromSurface"] = True
     if clip:
         params["clip"] = dict(clip, scale=1)
     shot = browser.send("Page.captureScreenshot", params, session, timeout=timeout)
@@ -263,8 +267,9 @@ def screenshot(browser, session, path, clip=None, timeout=90):
 
 
 def full_page_screenshot(browser, session, path, width, view_height=900):
-    """The whole page as a PNG: the viewport is made as tall as the page for the capture (sticky and
-    viewport-sized elements then render as in one tall window), then restored. Returns the height."""
+    """The whole page as a PNG or JPEG (by `path`, as screenshot()): the viewport is made as tall as the
+    page for the capture (sticky and viewport-sized elements then render as in one tall window), then
+    restored. Returns the height."""
     metrics = browser.send("Page.getLayoutMetrics", {}, session)
     height = int(metrics["cssContentSize"]["height"])
     browser.send("Emulation.setDeviceMetricsOverride",
