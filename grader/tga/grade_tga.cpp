@@ -339,10 +339,14 @@ bool buildLoader(Job& job, const fs::path& copied, std::string& log) {
     run.workingDirectory = "/out";
     const std::string home = run.isolation == Isolation::Namespaces ? "/tmp" : out.string();
     run.env = {"PATH=/usr/bin:/bin", "LC_ALL=C", "HOME=" + home, "TMPDIR=" + home};
-    const RunResult result = runSandboxed(run, {T10_GRADE_TGA_COMPILER, "-std=c++17", "-O0", "-g0", "-I" + run.path("/t10/kit/include"),
-                                                run.path("/submission/tga.cpp"), run.path("/t10/kit/tga_harness.o"),
-                                                run.path("/t10/kit/file.o"), "-o", run.path("/out/loader")},
-                                          (job.work / "logs" / "build.log").string());
+    // The flags the kit's objects were compiled with (grader/CMakeLists.txt names them once).
+    std::vector<std::string> command{T10_GRADE_TGA_COMPILER};
+    std::istringstream flags(T10_GRADE_TGA_FLAGS);
+    for (std::string flag; flags >> flag;) command.push_back(flag);
+    command.insert(command.end(), {"-I" + run.path("/t10/kit/include"), run.path("/submission/tga.cpp"),
+                                   run.path("/t10/kit/tga_harness.o"), run.path("/t10/kit/file.o"), "-o",
+                                   run.path("/out/loader")});
+    const RunResult result = runSandboxed(run, command, (job.work / "logs" / "build.log").string());
     // The compiler names the submission's file by its path inside: the student knows it as tga.cpp.
     log = result.output;
     for (const std::string& prefix : {run.path("/submission/"), run.path("/t10/kit/")}) {
