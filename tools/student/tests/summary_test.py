@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Unit tests of tools/check/summary.py on hand-written reports: today's report.json, the fields a
+"""Unit tests of tools/student/summary.py on hand-written reports: today's report.json, the fields a
 newer grader adds (fix_first, summary, per-step entries, mistakes with estimates), missing or oddly
 shaped optional fields, statuses other than graded, and files that are not reports.
 
