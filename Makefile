@@ -187,7 +187,7 @@ web: deps
 web-serve:
 	@[ -d $(OUT)/web ] || { echo "make web-serve: $(OUT)/web/ does not exist: run make web first"; exit 2; }
 	@echo "Serving $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (e.g. /tutorial10_part3_gaussian/; Ctrl-C stops)"
-	@exec python3 tools/web/web_page.py --serve $(OUT)/web --port $(WEB_PORT)
+	@PYTHONPATH=$(CURDIR)/tools exec python3 -m web.web_page --serve $(OUT)/web --port $(WEB_PORT)
 
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).

@@ -137,10 +137,10 @@ exports=""
 for kv in "${envs[@]}"; do exports+="export $(printf '%q' "$kv"); "; done
 # devcontainer.json's lifecycle commands, read as the schema test reads the file.
 lifecycle() {
-    python3 -c 'import sys; sys.path.insert(0, sys.argv[1]); import devcontainer_schema as d
-value = d.load_jsonc(open(sys.argv[2]).read()).get(sys.argv[3], "")
+    PYTHONPATH="$work/context/tests/devcontainer" python3 -c 'import sys; import devcontainer_schema as d
+value = d.load_jsonc(open(sys.argv[1]).read()).get(sys.argv[2], "")
 print(value if isinstance(value, str) else " && ".join(value))' \
-        "$work/context/tests/devcontainer" "$work/context/.devcontainer/devcontainer.json" "$1"
+        "$work/context/.devcontainer/devcontainer.json" "$1"
 }
 post_create=$(lifecycle postCreateCommand)
 post_start=$(lifecycle postStartCommand)
