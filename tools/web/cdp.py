@@ -7,7 +7,8 @@ for the network fails loudly.
 
 Used by the site's browser tests (site/tests/browser_test.py, live_test.py), the web stages' tests
 (tests/web/web_test.py, through web_page.py), the site build's first-frame measurement
-(tools/build_site/measure_web.py), make web-serve (web_page.py) and the dev container's noVNC
+(tools/build_site/measure_web.py), make web-serve (web_page.py), the GLSL ES translations' browser
+test (tests/unit/test_glsl_es_browser.cpp, through page_value.py) and the dev container's noVNC
 screenshot (tools/devcontainer_check/novnc_screenshot.py, a page the container serves itself). Each
 imports it as `web.cdp`, with tools/ on PYTHONPATH (tools/web/__init__.py).
 """
