@@ -21,7 +21,7 @@ function(t10_add_stage_tests stage)
     if(ARG_AFTER)
         list(JOIN ARG_STEPS "-" range)
         add_test(NAME "stage diff: ${ARG_AFTER} -> ${stage} holds only steps ${range}"
-                 COMMAND ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${ARG_AFTER}
+                 COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${ARG_AFTER}
                          ${PROJECT_SOURCE_DIR}/${stage} ${ARG_STEPS})
     endif()
     if(ARG_SAME_GOLDEN_AS)
@@ -51,14 +51,14 @@ if(TARGET extras)
 endif()
 # The check can fail: Part 2 measured against Part 1's step range holds steps 17-25 too many.
 add_test(NAME "stage diff: rejects steps of another part"
-         COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+         COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${PROJECT_SOURCE_DIR}/tutorial10_part0_start ${PROJECT_SOURCE_DIR}/tutorial10_part2_bloom 1 16)
 
 # A malformed marker is a problem too (the parser is tools/markers, shared with the site).
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old/Tutorial10.cpp "int a;\n")
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new/Tutorial10.cpp "int a;\n// [step 1] b\nint b;\n")
 add_test(NAME "stage diff: rejects a step block that is never closed"
-         COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+         COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new 1 1)
 
 # --- make help names every target of the Makefile and every `make NAME` of the README. ----------
