@@ -28,8 +28,8 @@ checks the grader the same way: its folders are the stages of its pipeline, and 
 the headers of common/ (as above) and those of its own stage and the stages before it:
 
     isolation, intake, diagnosis      (nothing of the grader below them)
-    build     isolation, intake       (a submission's host code compiled in the sandbox, cached)
-    capture   build, isolation, intake            (a case rendered in the sandbox; its outputs examined)
+    compile   isolation, intake       (a submission's host code compiled in the sandbox, cached)
+    capture   compile, isolation, intake          (a case rendered in the sandbox; its outputs examined)
     checks    diagnosis, isolation    (render results checked, FLIP run as a limited process; mistakes named)
     scoring   checks, diagnosis
     report    scoring, checks, diagnosis, intake    (report.json, report.html, gradebook, class index)
@@ -90,14 +90,14 @@ GRADER_ALLOWED = {
     "isolation": {"isolation"},
     "intake": {"intake"},
     "diagnosis": {"diagnosis"},
-    "build": {"build", "isolation", "intake"},
-    "capture": {"capture", "build", "isolation", "intake"},
+    "compile": {"compile", "isolation", "intake"},
+    "capture": {"capture", "compile", "isolation", "intake"},
     "checks": {"checks", "diagnosis", "isolation"},
     "scoring": {"scoring", "checks", "diagnosis"},
     "report": REPORT_STAGES,
     "platforms": REPORT_STAGES | {"platforms"},
     "tga": {"tga", "isolation", "intake"},
-    "cli": {"cli", "isolation", "intake", "build", "capture", "checks", "diagnosis", "scoring", "report", "platforms"},
+    "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "scoring", "report", "platforms"},
     "tests": {"tests"},
 }
 

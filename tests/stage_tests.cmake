@@ -127,8 +127,8 @@ t10_add_grader_layer_mutant("code that includes a test's header" checks/checks.c
 t10_add_grader_layer_mutant("a report that includes a platform's format" report/class_index.cpp
                             "#include \"platforms/formats.hpp\""
                             "class_index.cpp:1: includes \"platforms/formats.hpp\" of platforms, a stage report may not include")
-t10_add_grader_layer_mutant("a build that includes the capture after it" build/build.cpp "#include \"capture/capture.hpp\""
-                            "build.cpp:1: includes \"capture/capture.hpp\" of capture, a stage build may not include")
+t10_add_grader_layer_mutant("a compile that includes the capture after it" compile/build.cpp "#include \"capture/capture.hpp\""
+                            "build.cpp:1: includes \"capture/capture.hpp\" of capture, a stage compile may not include")
 
 # --- Function length: no function over 120 lines outside stage files and data generators. --------
 set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)

@@ -14,7 +14,7 @@
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
 // index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
 // report, 1 when the grader failed, 2 on bad usage.
-#include "build/build.hpp"
+#include "compile/build.hpp"
 #include "cli/command_line.hpp"
 #include "capture/capture.hpp"
 #include "capture/cases.hpp"
