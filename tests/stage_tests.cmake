@@ -139,6 +139,16 @@ t10_add_grader_layer_mutant("a core that includes the dump reader" checks/reconc
 string(REPEAT "//\n" 300 many_lines)
 t10_add_grader_layer_mutant("a file over 700 lines" checks/table.cpp "${many_lines}" "table.cpp: [0-9]+ lines, over 700")
 
+# --- The facts of each part (its stage, its steps, its golden): grader/part/part.cpp describes them for
+# the grader; the CMake, Python and shell that cannot include it are held to it (tests/part_facts.py).
+# Shown to fail with Gradescope's setup.sh grading Part 2 against Part 3's stage.
+set(PART_FACTS ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/part_facts.py ${PROJECT_SOURCE_DIR})
+add_test(NAME "part facts: every copy agrees with the grader's part description"
+         COMMAND ${EXPECT} 0 "they agree" -- ${PART_FACTS})
+add_test(NAME "part facts: rejects a copy that disagrees"
+         COMMAND ${EXPECT} 1 "setup.sh: the case of .T10_PART: .*'2': 'tutorial10_part3_gaussian'.*where grader/part/part.cpp says" -- ${PART_FACTS}
+                 --replace grader/platforms/gradescope/setup.sh "2) stage=tutorial10_part2_bloom" "2) stage=tutorial10_part3_gaussian")
+
 # --- Function length: no function over 120 lines outside stage files and data generators. --------
 set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)
 add_test(NAME "function length: nothing over 120 lines outside stages and data generators"
