@@ -36,7 +36,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     platforms report and what it may include          (the platforms' result files)
     tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
     cli       every stage             (the command line on top)
-    tests     nothing of the grader
+    tests     the checks' core (checks, diagnosis, part), never what is around it, and the tests' t10_catch.hpp
 
 A grader header is known by its path below the grader folder (`checks/checks.hpp`). No two grader
 files may need each other.
@@ -105,7 +105,7 @@ GRADER_ALLOWED = {
     "platforms": REPORT_STAGES | {"platforms"},
     "tga": {"tga", "isolation", "intake"},
     "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "part", "scoring", "report", "platforms"},
-    "tests": {"tests"},
+    "tests": {"tests", "checks", "diagnosis", "part"},
 }
 
 # The checks' core: these stages but for the units around them (a dump folder read, the catalogue's
@@ -196,7 +196,7 @@ def check_grader(grader, common):
             if not match:
                 continue
             target = match.group(1)
-            if target in common_headers or target == "glad/gl.h":
+            if target in common_headers or target == "glad/gl.h" or (stage == "tests" and target == "t10_catch.hpp"):
                 continue
             if target not in owner:
                 problems.append(f"{path}:{number}: includes \"{target}\", which is neither a header of common/ nor "
@@ -204,7 +204,8 @@ def check_grader(grader, common):
                 continue
             if owner[target] not in GRADER_ALLOWED[stage]:
                 problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]}, a stage {stage} may not include")
-            elif core and (owner[target] not in GRADER_CORE_STAGES or target.rsplit(".", 1)[0] in GRADER_CORE_ADAPTERS):
+            elif (core or stage == "tests") and (owner[target] not in GRADER_CORE_STAGES or
+                                                 target.rsplit(".", 1)[0] in GRADER_CORE_ADAPTERS):
                 problems.append(f"{path}:{number}: includes \"{target}\", which is not the checks' core: the core runs on "
                                 "buffers in memory (see GRADER_CORE_ADAPTERS)")
             other = pathlib.PurePosixPath(target).with_suffix("").as_posix()

@@ -25,6 +25,13 @@ set(GRADE_TIMEOUT 20)
 # wait GRADE_TIMEOUT for it, the loop spinning a CPU all the while). It loops whatever the load.
 set(GRADE_LOOP_TIMEOUT 3)
 
+# The checks' core on buffers made in memory (core/test_core_in_memory.cpp), linked with the core alone:
+# a page's readback would run the same checks. Each case says how it fails.
+add_executable(t10_grade_core_tests ${GRADE_TESTS}/core/test_core_in_memory.cpp)
+target_link_libraries(t10_grade_core_tests PRIVATE t10_grade_core t10_flags t10_catch)
+target_compile_definitions(t10_grade_core_tests PRIVATE T10_GRADE_MISTAKES="${CMAKE_CURRENT_SOURCE_DIR}/diagnosis/mistakes.tsv")
+catch_discover_tests(t10_grade_core_tests TEST_PREFIX "grade core: ")
+
 add_test(NAME "grade: write the test submissions"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/make_submissions.py ${PROJECT_SOURCE_DIR} ${GRADE_SUBMISSIONS})
 set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SETUP grade_submissions)
