@@ -36,7 +36,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     platforms report and what it may include          (the platforms' result files)
     tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
     cli       every stage             (the command line on top)
-    tests     the checks' core (checks, diagnosis, part), never what is around it, and the tests' t10_catch.hpp
+    tests     the checks' core (checks, diagnosis, part), never what is around it (and GRADER_TEST_HEADERS)
 
 A grader header is known by its path below the grader folder (`checks/checks.hpp`). No two grader
 files may need each other.
@@ -117,6 +117,8 @@ GRADER_CORE_SYSTEM_BANNED = {"filesystem", "fstream", "cstdio", "stdio.h", "unis
 GRADER_CORE_COMMON_BANNED = {"t10/image_io.hpp", "t10/file.hpp", "t10/json.hpp", "t10/outputs.hpp"}
 SYSTEM_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+)>')
 GRADER_MAX_LINES = 700
+# What the grader's tests include besides the core: the tests' Catch2 header and the catalogue compiled in.
+GRADER_TEST_HEADERS = {"t10_catch.hpp", "mistakes_tsv.inc"}
 
 
 def find_cycle(graph):
@@ -196,7 +198,7 @@ def check_grader(grader, common):
             if not match:
                 continue
             target = match.group(1)
-            if target in common_headers or target == "glad/gl.h" or (stage == "tests" and target == "t10_catch.hpp"):
+            if target in common_headers or target == "glad/gl.h" or (stage == "tests" and target in GRADER_TEST_HEADERS):
                 continue
             if target not in owner:
                 problems.append(f"{path}:{number}: includes \"{target}\", which is neither a header of common/ nor "

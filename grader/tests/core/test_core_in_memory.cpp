@@ -1,6 +1,6 @@
 // The checks' core (t10_grade_core) run on buffers made in memory, as a page would hand it its own
 // readback: this program links the core alone, without the dump reader, the catalogue's file, FLIP or
-// the report's images (it gives the catalogue itself), so a core that reached for them would not link.
+// the report's images (it gives the catalogue compiled in), so a core that reached for them would not link.
 // Part 1's buffers computed by the CPU reference pass every check; a frame rendered with another middle
 // grey fails the frame check alone, naming the constant with its value; a luminance level that could
 // not be read fails the case only when a check reads it. Shown to fail with 0.55 expected (0.5000043
@@ -13,20 +13,22 @@
 #include "t10_catch.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 namespace t10::grade {
 
-// The catalogue as the core's user gives it: here the file, read by the test.
+// The catalogue as the core's user gives it: here mistakes.tsv compiled in (grader/tests/tests.cmake).
 const std::string& catalogueName() {
-    static const std::string name = T10_GRADE_MISTAKES;
+    static const std::string name = "mistakes.tsv (compiled in)";
     return name;
 }
 
 const std::vector<Mistake>& catalogue() {
     static const std::vector<Mistake> table = [] {
-        std::ifstream in(catalogueName());
-        return parseCatalogue(in, catalogueName());
+        std::istringstream text(
+#include "mistakes_tsv.inc"
+        );
+        return parseCatalogue(text, catalogueName());
     }();
     return table;
 }
