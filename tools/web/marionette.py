@@ -1,0 +1,220 @@
+"""The repository's Firefox client: Firefox ESR on its own Xvfb display, spoken to over Marionette.
+
+Marionette is the remote protocol Firefox itself serves (started with --marionette): JSON over a local
+TCP socket, each message prefixed by its length in bytes and a colon; a command is
+[0, id, name, parameters] and its reply [1, id, error, result]. geckodriver translates WebDriver to
+exactly this, so without it (Debian ships none) only the standard library and Debian's firefox-esr
+and xvfb are needed. The port is a free one that Firefox picks (marionette.port 0) and writes to
+MarionetteActivePort in its profile.
+
+A display, because headless Firefox on Mesa has no WebGL here, while Firefox under Xvfb draws WebGL 2
+with llvmpipe. Xvfb picks a free display number (-displayfd). Pages come from cdp.py's local static
+server; every other host goes to a proxy that refuses (a page reaching for the network fails loudly).
+
+Used by the web stages' Firefox test (tests/web/web_test.py, through web_page.py's FirefoxStagePage).
+"""
+import base64
+import contextlib
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+
+from web.cdp import Failure, start_server
+
+# Written to the profile's user.js. Marionette adds its own recommended preferences (no updates, no
+# telemetry, no first-run pages) when it starts.
+PREFERENCES = {
+    "marionette.port": 0,                        # a free port, written to MarionetteActivePort
+    "webgl.force-enabled": True,                 # llvmpipe is a software GL that Firefox may blocklist
+    "devtools.console.stdout.content": True,     # the page's console (and script errors) in the log
+    "layout.css.devPixelsPerPx": "1.0",          # one canvas pixel per screen pixel, as in Chromium
+    "network.proxy.type": 1,                     # everything but 127.0.0.1 (never proxied: Firefox's
+    "network.proxy.http": "127.0.0.1",           # network.proxy.allow_hijacking_localhost is false)
+    "network.proxy.http_port": 9,                # goes to the discard port, which nothing serves
+    "network.proxy.ssl": "127.0.0.1",
+    "network.proxy.ssl_port": 9,
+    "network.proxy.share_proxy_settings": True,
+    "browser.sessionstore.resume_from_crash": False,
+}
+
+
+def find_firefox():
+    for name in ("firefox-esr", "firefox"):
+        path = shutil.which(name)
+        if path:
+            return path
+    return None
+
+
+def _end_group(proc):
+    """Ends `proc` and every process in its group (started with start_new_session), by group id."""
+    for sig in (signal.SIGTERM, signal.SIGKILL):
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            return
+        try:
+            proc.wait(timeout=5)
+            return
+        except subprocess.TimeoutExpired:
+            pass
+
+
+def start_xvfb(log, size=(1920, 1200)):
+    """An Xvfb on a free display number; returns (process, DISPLAY)."""
+    read_fd, write_fd = os.pipe()
+    proc = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", f"{size[0]}x{size[1]}x24",
+                             "-nolisten", "tcp", "-noreset"],
+                            stdin=subprocess.DEVNULL, stdout=log, stderr=log, pass_fds=(write_fd,),
+                            start_new_session=True)
+    os.close(write_fd)
+    number = b""
+    try:
+        while not number.endswith(b"\n"):
+            chunk = os.read(read_fd, 16)  # Xvfb writes the number once it accepts connections
+            if not chunk:
+                _end_group(proc)
+                raise Failure(f"Xvfb ended before it opened a display (exit code {proc.poll()}); see its log")
+            number += chunk
+    finally:
+        os.close(read_fd)
+    return proc, ":" + number.decode().strip()
+
+
+class Firefox:
+    """One Firefox (a fresh profile at `profile`) on its own Xvfb, with a Marionette session; its window
+    `window` (width, height). deadline (time.monotonic()) bounds every wait, when given."""
+
+    def __init__(self, firefox, profile, log_path, deadline=None, window=(1400, 1000)):
+        self.deadline = deadline
+        self.log_path = log_path
+        self.log = open(log_path, "w")
+        self.sock = self.firefox = None
+        self.next_id = 0
+        with open(os.path.join(profile, "user.js"), "w") as f:
+            f.writelines(f"user_pref({json.dumps(k)}, {json.dumps(v)});\n" for k, v in PREFERENCES.items())
+        self.xvfb, display = start_xvfb(self.log)
+        try:
+            env = dict(os.environ, DISPLAY=display, MOZ_CRASHREPORTER_DISABLE="1", MOZ_NO_REMOTE="1")
+            env.pop("WAYLAND_DISPLAY", None)
+            self.firefox = subprocess.Popen([firefox, "--marionette", "--no-remote", "--profile", profile, "about:blank"],
+                                            stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log, env=env,
+                                            start_new_session=True)
+            port_file = os.path.join(profile, "MarionetteActivePort")
+            end = time.monotonic() + min(60, self.remaining())
+            while not os.path.exists(port_file):
+                if self.firefox.poll() is not None or time.monotonic() > end:
+                    raise Failure(f"Firefox did not start Marionette (exit code {self.firefox.poll()}); see {log_path}")
+                time.sleep(0.05)
+            time.sleep(0.05)  # the file is written whole, but give its writer the moment to close it
+            with open(port_file) as f:
+                port = int(f.read().strip())
+            self.sock = socket.create_connection(("127.0.0.1", port), timeout=30)
+            self.reader = self.sock.makefile("rb")
+            hello = self._receive(30)
+            if hello.get("marionetteProtocol") != 3:
+                raise Failure(f"Firefox speaks Marionette protocol {hello.get('marionetteProtocol')}, not 3")
+            self.send("WebDriver:NewSession", {"pageLoadStrategy": "normal"})
+            self.send("WebDriver:SetWindowRect", {"x": 0, "y": 0, "width": window[0], "height": window[1]})
+        except BaseException:
+            self.close()
+            raise
+
+    def remaining(self):
+        if self.deadline is None:
+            return float("inf")
+        left = self.deadline - time.monotonic()
+        if left <= 0:
+            raise Failure("time limit reached")
+        return left
+
+    def _receive(self, timeout):
+        self.sock.settimeout(timeout)
+        try:
+            length = b""
+            while not length.endswith(b":"):
+                byte = self.reader.read(1)
+                if not byte:
+                    raise Failure(f"Firefox closed the Marionette connection (exit code {self.firefox.poll()}); "
+                                  f"see {self.log_path}")
+                length += byte
+            return json.loads(self.reader.read(int(length[:-1])))
+        except socket.timeout:
+            raise Failure(f"no reply from Firefox within {timeout:.0f} s") from None
+
+    def send(self, name, params=None, timeout=60):
+        """The result of Marionette command `name`, or Failure with Firefox's error."""
+        self.next_id += 1
+        data = json.dumps([0, self.next_id, name, params or {}]).encode()
+        self.sock.sendall(str(len(data)).encode() + b":" + data)
+        while True:
+            reply = self._receive(min(timeout, self.remaining()))
+            if reply[0] == 1 and reply[1] == self.next_id:
+                break
+        if reply[2]:
+            raise Failure(f"{name}: {reply[2].get('error')}: {reply[2].get('message')}")
+        return reply[3]
+
+    def evaluate(self, expression, timeout=60):
+        """The value of a JavaScript expression in the page (a promise's value once it settles)."""
+        return self.send("WebDriver:ExecuteScript", {"script": f"return ({expression});", "args": []},
+                         timeout)["value"]
+
+    def navigate(self, url, timeout=120):
+        """Opens `url` and returns once it has loaded (its load event)."""
+        self.send("WebDriver:Navigate", {"url": url}, timeout)
+
+    def screenshot(self, path):
+        """The whole page as a PNG."""
+        shot = self.send("WebDriver:TakeScreenshot", {"full": True, "hash": False}, 90)["value"]
+        with open(path, "wb") as f:
+            f.write(base64.b64decode(shot))
+
+    def log_lines(self):
+        """Firefox's log so far (the page's console lines among its own), as text lines."""
+        self.log.flush()
+        with open(self.log_path, errors="replace") as f:
+            return f.read().splitlines()
+
+    def close(self):
+        try:
+            if self.sock:
+                try:
+                    self.send("Marionette:Quit", {"flags": ["eForceQuit"]}, timeout=10)
+                except Exception:
+                    pass
+                self.sock.close()
+            if self.firefox and self.firefox.poll() is None:
+                try:
+                    self.firefox.wait(timeout=10)
+                except subprocess.TimeoutExpired:
+                    pass
+        finally:
+            for proc in (self.firefox, self.xvfb):
+                if proc:
+                    _end_group(proc)
+            self.log.close()
+
+
+@contextlib.contextmanager
+def browsing(root, firefox, log_path, deadline=None, window=(1400, 1000)):
+    """A Firefox (a fresh profile, its own display) and a local server of `root`: yields (browser, base
+    URL with a trailing /); afterwards ends both and removes the profile."""
+    profile = tempfile.mkdtemp(prefix="t10-firefox-")
+    browser = server = None
+    try:
+        browser = Firefox(firefox, profile, log_path, deadline, window)
+        server = start_server(root)
+        yield browser, f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        if browser:
+            browser.close()
+        if server:
+            server.shutdown()
+            server.server_close()
+        shutil.rmtree(profile, ignore_errors=True)
