@@ -20,10 +20,13 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
 # run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
-# that installs the snap); the site's CMake finds either program.
+# that installs the snap); the site's CMake finds either program. Firefox ESR (the web stages' second
+# engine, under Xvfb) is firefox-esr on Debian; Ubuntu has no such package, and that test says it skips.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
+FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex python3-pygments \
+                 fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -113,7 +116,7 @@ run: build
 # network and dpkg; as soon as the packages are in, `make web` builds the browser pages beside the
 # native build (emscripten, into $(OUT)/web; its output in $(BUILD)/web.log) for ctest's web tests
 # (tests/web/); then CMake configures again, finding the programs installed meanwhile (xvfb-run,
-# jekyll, chromium), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
+# jekyll, chromium, firefox-esr), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
 # and compiles 128-bit vectors (GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128, as the grader's renders
 # do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's
 # small renders spend more CPU compiling shaders than drawing them (the vectors: ctest 163 s, not 168).
