@@ -45,7 +45,7 @@ help:
 	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one; WEB_PRESET=web-release: -O3)"
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
-	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
+	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium and Firefox ESR"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
 	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
@@ -206,9 +206,12 @@ site: configure
 # The site's live embeds in headless Chromium (site/tests/live_test.py), after building the site with the
 # web stages: every stage's embed renders, the exercises' controls change the frame and back, without
 # WebGL the pictures stay; screenshots in $(BUILD)/site-tests/live/. About two minutes on two cores, so
-# not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails.
+# not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails. The same
+# embeds in Firefox ESR under Xvfb first (site/tests/live_firefox_test.py, about 30 s).
 .PHONY: site-live
+site-live: PACKAGES += $(FIREFOX_PACKAGE) xvfb
 site-live: site
+	@! grep -Eq '^T10_(FIREFOX|XVFB):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site-live
 
 # site-serve rebuilds the site only when something it is made from (site/, the programs in $(BIN)/)

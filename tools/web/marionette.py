@@ -20,6 +20,7 @@ import os
 import shutil
 import signal
 import socket
+import struct
 import subprocess
 import tempfile
 import time
@@ -65,11 +66,12 @@ def _end_group(proc):
             pass
 
 
-def start_xvfb(log, size=(1920, 1200)):
-    """An Xvfb on a free display number; returns (process, DISPLAY)."""
+def start_xvfb(log, fbdir, size=(1920, 1200)):
+    """An Xvfb on a free display number, its screen kept in fbdir/Xvfb_screen0 (an XWD image); returns
+    (process, DISPLAY)."""
     read_fd, write_fd = os.pipe()
     proc = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", f"{size[0]}x{size[1]}x24",
-                             "-nolisten", "tcp", "-noreset"],
+                             "-nolisten", "tcp", "-noreset", "-fbdir", fbdir],
                             stdin=subprocess.DEVNULL, stdout=log, stderr=log, pass_fds=(write_fd,),
                             start_new_session=True)
     os.close(write_fd)
@@ -86,19 +88,46 @@ def start_xvfb(log, size=(1920, 1200)):
     return proc, ":" + number.decode().strip()
 
 
+def write_screen_png(xwd_path, png_path, box):
+    """The region box (x, y, width, height) of an Xvfb screen file (XWD, 32-bit pixels) as an RGB PNG."""
+    from web.web_page import write_png  # the one PNG writer (web_page imports this module)
+    with open(xwd_path, "rb") as f:
+        data = f.read()
+    header = struct.unpack(">25I", data[:100])
+    header_size, width, height, byte_order, bits, stride, colours = (header[0], header[4], header[5], header[7],
+                                                                       header[11], header[12], header[19])
+    if bits != 32:
+        raise Failure(f"{xwd_path}: {bits}-bit pixels, not 32")
+    x, y = max(0, box[0]), max(0, box[1])
+    w, h = min(box[2], width - x), min(box[3], height - y)
+    if w <= 0 or h <= 0:
+        raise Failure(f"the region {box} is not on the {width}x{height} screen")
+    pixels = data[header_size + colours * 12:]
+    red, green, blue = (2, 1, 0) if byte_order == 0 else (1, 2, 3)  # LSBFirst: B G R x; MSBFirst: x R G B
+    rgba = bytearray()
+    for row in range(y + h - 1, y - 1, -1):  # write_png takes the bottom row first
+        line = pixels[row * stride + x * 4:row * stride + (x + w) * 4]
+        out = bytearray(w * 4)
+        out[0::4], out[1::4], out[2::4] = line[red::4], line[green::4], line[blue::4]
+        rgba += out
+    write_png(png_path, w, h, bytes(rgba))
+
+
 class Firefox:
     """One Firefox (a fresh profile at `profile`) on its own Xvfb, with a Marionette session; its window
-    `window` (width, height). deadline (time.monotonic()) bounds every wait, when given."""
+    `window` (width, height); `prefs`: more preferences. deadline (time.monotonic()) bounds every wait."""
 
-    def __init__(self, firefox, profile, log_path, deadline=None, window=(1400, 1000)):
+    def __init__(self, firefox, profile, log_path, deadline=None, window=(1400, 1000), prefs=None):
         self.deadline = deadline
         self.log_path = log_path
         self.log = open(log_path, "w")
         self.sock = self.firefox = None
         self.next_id = 0
         with open(os.path.join(profile, "user.js"), "w") as f:
-            f.writelines(f"user_pref({json.dumps(k)}, {json.dumps(v)});\n" for k, v in PREFERENCES.items())
-        self.xvfb, display = start_xvfb(self.log)
+            f.writelines(f"user_pref({json.dumps(k)}, {json.dumps(v)});\n"
+                         for k, v in {**PREFERENCES, **(prefs or {})}.items())
+        self.screen_file = os.path.join(profile, "Xvfb_screen0")
+        self.xvfb, display = start_xvfb(self.log, profile)
         try:
             env = dict(os.environ, DISPLAY=display, MOZ_CRASHREPORTER_DISABLE="1", MOZ_NO_REMOTE="1")
             env.pop("WAYLAND_DISPLAY", None)
@@ -170,10 +199,25 @@ class Firefox:
         self.send("WebDriver:Navigate", {"url": url}, timeout)
 
     def screenshot(self, path):
-        """The whole page as a PNG."""
+        """The whole page as a PNG, as Firefox draws it for WebDriver (a WebGL canvas in an iframe comes
+        out black there: display_screenshot() shows one)."""
         shot = self.send("WebDriver:TakeScreenshot", {"full": True, "hash": False}, 90)["value"]
         with open(path, "wb") as f:
             f.write(base64.b64decode(shot))
+
+    def display_screenshot(self, path, selector):
+        """The first element that matches the CSS `selector`, scrolled into view, as the display shows it
+        (Xvfb's screen), as a PNG."""
+        box = self.evaluate(f"""new Promise(done => {{
+            const e = document.querySelector({json.dumps(selector)});
+            e.scrollIntoView();
+            requestAnimationFrame(() => requestAnimationFrame(() => {{  // drawn after the scroll
+              const r = e.getBoundingClientRect();
+              done([mozInnerScreenX + r.left, mozInnerScreenY + r.top, r.width, r.height].map(Math.round));
+            }}));
+        }})""")
+        time.sleep(0.3)  # the compositor presents the frame to the X server a moment later
+        write_screen_png(self.screen_file, path, box)
 
     def log_lines(self):
         """Firefox's log so far (the page's console lines among its own), as text lines."""
@@ -202,13 +246,13 @@ class Firefox:
 
 
 @contextlib.contextmanager
-def browsing(root, firefox, log_path, deadline=None, window=(1400, 1000)):
+def browsing(root, firefox, log_path, deadline=None, window=(1400, 1000), prefs=None):
     """A Firefox (a fresh profile, its own display) and a local server of `root`: yields (browser, base
     URL with a trailing /); afterwards ends both and removes the profile."""
     profile = tempfile.mkdtemp(prefix="t10-firefox-")
     browser = server = None
     try:
-        browser = Firefox(firefox, profile, log_path, deadline, window)
+        browser = Firefox(firefox, profile, log_path, deadline, window, prefs)
         server = start_server(root)
         yield browser, f"http://127.0.0.1:{server.server_address[1]}/"
     finally:
