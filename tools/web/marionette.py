@@ -17,15 +17,15 @@ import base64
 import contextlib
 import json
 import os
+import select
 import shutil
-import signal
 import socket
 import struct
 import subprocess
 import tempfile
 import time
 
-from web.cdp import Failure, start_server
+from web.cdp import Failure, end_group, seconds_left, serving
 
 # Written to the profile's user.js. Marionette adds its own recommended preferences (no updates, no
 # telemetry, no first-run pages) when it starts.
@@ -52,20 +52,6 @@ def find_firefox():
     return None
 
 
-def _end_group(proc):
-    """Ends `proc` and every process in its group (started with start_new_session), by group id."""
-    for sig in (signal.SIGTERM, signal.SIGKILL):
-        try:
-            os.killpg(proc.pid, sig)
-        except ProcessLookupError:
-            return
-        try:
-            proc.wait(timeout=5)
-            return
-        except subprocess.TimeoutExpired:
-            pass
-
-
 def start_xvfb(log, fbdir, size=(1920, 1200)):
     """An Xvfb on a free display number, its screen kept in fbdir/Xvfb_screen0 (an XWD image); returns
     (process, DISPLAY)."""
@@ -78,10 +64,11 @@ def start_xvfb(log, fbdir, size=(1920, 1200)):
     number = b""
     try:
         while not number.endswith(b"\n"):
-            chunk = os.read(read_fd, 16)  # Xvfb writes the number once it accepts connections
+            # Xvfb writes the number once it accepts connections.
+            chunk = os.read(read_fd, 16) if select.select([read_fd], [], [], 30)[0] else b""
             if not chunk:
-                _end_group(proc)
-                raise Failure(f"Xvfb ended before it opened a display (exit code {proc.poll()}); see its log")
+                end_group(proc)
+                raise Failure(f"Xvfb opened no display within 30 s (exit code {proc.poll()}); see its log")
             number += chunk
     finally:
         os.close(read_fd)
@@ -121,28 +108,20 @@ class Firefox:
         self.deadline = deadline
         self.log_path = log_path
         self.log = open(log_path, "w")
-        self.sock = self.firefox = None
+        self.sock = self.firefox = self.xvfb = None
         self.next_id = 0
         with open(os.path.join(profile, "user.js"), "w") as f:
             f.writelines(f"user_pref({json.dumps(k)}, {json.dumps(v)});\n"
                          for k, v in {**PREFERENCES, **(prefs or {})}.items())
         self.screen_file = os.path.join(profile, "Xvfb_screen0")
-        self.xvfb, display = start_xvfb(self.log, profile)
         try:
-            env = dict(os.environ, DISPLAY=display, MOZ_CRASHREPORTER_DISABLE="1", MOZ_NO_REMOTE="1")
+            self.xvfb, display = start_xvfb(self.log, profile)
+            env = dict(os.environ, DISPLAY=display, MOZ_CRASHREPORTER_DISABLE="1")
             env.pop("WAYLAND_DISPLAY", None)
             self.firefox = subprocess.Popen([firefox, "--marionette", "--no-remote", "--profile", profile, "about:blank"],
                                             stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log, env=env,
                                             start_new_session=True)
-            port_file = os.path.join(profile, "MarionetteActivePort")
-            end = time.monotonic() + min(60, self.remaining())
-            while not os.path.exists(port_file):
-                if self.firefox.poll() is not None or time.monotonic() > end:
-                    raise Failure(f"Firefox did not start Marionette (exit code {self.firefox.poll()}); see {log_path}")
-                time.sleep(0.05)
-            time.sleep(0.05)  # the file is written whole, but give its writer the moment to close it
-            with open(port_file) as f:
-                port = int(f.read().strip())
+            port = self._wait_port(os.path.join(profile, "MarionetteActivePort"), min(60, self.remaining()))
             self.sock = socket.create_connection(("127.0.0.1", port), timeout=30)
             self.reader = self.sock.makefile("rb")
             hello = self._receive(30)
@@ -155,12 +134,20 @@ class Firefox:
             raise
 
     def remaining(self):
-        if self.deadline is None:
-            return float("inf")
-        left = self.deadline - time.monotonic()
-        if left <= 0:
-            raise Failure("time limit reached")
-        return left
+        return seconds_left(self.deadline)
+
+    def _wait_port(self, port_file, timeout):
+        """The port Firefox's Marionette listens on, once it has written it to `port_file`."""
+        end = time.monotonic() + timeout
+        while True:
+            try:
+                with open(port_file) as f:
+                    return int(f.read())
+            except (FileNotFoundError, ValueError):  # not there yet, or not written whole yet
+                pass
+            if self.firefox.poll() is not None or time.monotonic() > end:
+                raise Failure(f"Firefox did not start Marionette (exit code {self.firefox.poll()}); see {self.log_path}")
+            time.sleep(0.05)
 
     def _receive(self, timeout):
         self.sock.settimeout(timeout)
@@ -241,7 +228,7 @@ class Firefox:
         finally:
             for proc in (self.firefox, self.xvfb):
                 if proc:
-                    _end_group(proc)
+                    end_group(proc)
             self.log.close()
 
 
@@ -250,15 +237,12 @@ def browsing(root, firefox, log_path, deadline=None, window=(1400, 1000), prefs=
     """A Firefox (a fresh profile, its own display) and a local server of `root`: yields (browser, base
     URL with a trailing /); afterwards ends both and removes the profile."""
     profile = tempfile.mkdtemp(prefix="t10-firefox-")
-    browser = server = None
+    browser = None
     try:
         browser = Firefox(firefox, profile, log_path, deadline, window, prefs)
-        server = start_server(root)
-        yield browser, f"http://127.0.0.1:{server.server_address[1]}/"
+        with serving(root) as base:
+            yield browser, base
     finally:
         if browser:
             browser.close()
-        if server:
-            server.shutdown()
-            server.server_close()
         shutil.rmtree(profile, ignore_errors=True)
