@@ -91,8 +91,8 @@ def check_running(browser, built, out, timeout):
                             f"{e['note']} {e['error']}".strip())
             continue
         got = json.loads(browser.evaluate(f"{LIT}({json.dumps(stage)})"))
-        print(f"{stage}: rendered in {time.monotonic() - started:.1f} s, {got['w']}x{got['h']}, {e['frames']} frame(s), "
-              f"{got['lit']:.0%} of the pixels lit", flush=True)
+        print(f"{stage}: rendered in {time.monotonic() - started:.1f} s, {got['w']}x{got['h']}, "
+              f"{e['frames']} frame(s), {got['lit']:.0%} of the pixels lit", flush=True)
         if got["lit"] <= 0.01:
             problems.append(f"{stage}: the canvas is blank ({got['lit']:.2%} of its pixels above 8/255)")
         browser.display_screenshot(os.path.join(out, f"live-firefox-{stage}.png"), f'.live[data-stage="{stage}"]')
@@ -112,7 +112,8 @@ def check_no_webgl(args, url_path, out):
                 problems.append(f"without WebGL, {e['stage']}: state {e['state']}, note {e['note']!r}, "
                                 f"button shown {e['button']}, picture shown {e['imageShown']}")
         if current:
-            browser.display_screenshot(os.path.join(out, "live-firefox-no-webgl.png"), f'.live[data-stage="{current[0]["stage"]}"]')
+            first = current[0]["stage"]
+            browser.display_screenshot(os.path.join(out, "live-firefox-no-webgl.png"), f'.live[data-stage="{first}"]')
         print(f"without WebGL: {len(current)} embed(s) keep their pictures", flush=True)
     return problems
 
@@ -135,7 +136,8 @@ def main():
         return SKIP
     built = [n for n in args.stages.split(",") if n and os.path.isfile(os.path.join(args.web, n, "index.html"))]
     if not built:
-        print(f"SKIPPED: no web stage is built in {args.web} (make web builds them), so the site has no live embed to test")
+        print(f"SKIPPED: no web stage is built in {args.web} (make web builds them), "
+              f"so the site has no live embed to test")
         return SKIP
     if not os.path.isfile(os.path.join(args.site, args.page)):
         raise Failure(f"{args.site}/{args.page} does not exist: build the site first (make site)")

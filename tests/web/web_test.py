@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The web stages (make web, out/web/<stage>/index.html) driven in headless Chromium like the binaries.
+"""The web stages (make web, out/web/<stage>/index.html) driven in Chromium and Firefox like the binaries.
 
 usage: web_test.py COMMAND --web OUT_WEB --out DIR [options]
 

@@ -118,8 +118,8 @@ class Firefox:
             self.xvfb, display = start_xvfb(self.log, profile)
             env = dict(os.environ, DISPLAY=display, MOZ_CRASHREPORTER_DISABLE="1")
             env.pop("WAYLAND_DISPLAY", None)
-            self.firefox = subprocess.Popen([firefox, "--marionette", "--no-remote", "--profile", profile, "about:blank"],
-                                            stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log, env=env,
+            args = [firefox, "--marionette", "--no-remote", "--profile", profile, "about:blank"]
+            self.firefox = subprocess.Popen(args, stdin=subprocess.DEVNULL, stdout=self.log, stderr=self.log, env=env,
                                             start_new_session=True)
             port = self._wait_port(os.path.join(profile, "MarionetteActivePort"), min(60, self.remaining()))
             self.sock = socket.create_connection(("127.0.0.1", port), timeout=30)
@@ -146,7 +146,8 @@ class Firefox:
             except (FileNotFoundError, ValueError):  # not there yet, or not written whole yet
                 pass
             if self.firefox.poll() is not None or time.monotonic() > end:
-                raise Failure(f"Firefox did not start Marionette (exit code {self.firefox.poll()}); see {self.log_path}")
+                raise Failure(f"Firefox did not start Marionette (exit code {self.firefox.poll()}); "
+                              f"see {self.log_path}")
             time.sleep(0.05)
 
     def _receive(self, timeout):
