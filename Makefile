@@ -116,10 +116,11 @@ run: build
 # network and dpkg; as soon as the packages are in, `make web` builds the browser pages beside the
 # native build (emscripten, into $(OUT)/web; its output in $(BUILD)/web.log) for ctest's web tests
 # (tests/web/); then CMake configures again, finding the programs installed meanwhile (xvfb-run,
-# jekyll, chromium, firefox-esr), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
-# and compiles 128-bit vectors (GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128, as the grader's renders
-# do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's
-# small renders spend more CPU compiling shaders than drawing them (the vectors: ctest 163 s, not 168).
+# jekyll, chromium, firefox-esr), and ctest runs every test. The tests' llvmpipe skips LLVM's
+# optimisation passes and compiles 128-bit vectors (GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128, as
+# the grader's renders do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks
+# it) and the suite's small renders spend more CPU compiling shaders than drawing them (the vectors:
+# ctest 163 s, not 168).
 test: PACKAGES += catch2 python3-venv
 test: deps
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
