@@ -20,10 +20,13 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
 # run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
-# that installs the snap); the site's CMake finds either program.
+# that installs the snap); the site's CMake finds either program. Firefox ESR (the web stages' second
+# engine, under Xvfb) is firefox-esr on Debian; Ubuntu has no such package, and that test says it skips.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
+FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex python3-pygments \
+                 fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -42,7 +45,7 @@ help:
 	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one; WEB_PRESET=web-release: -O3)"
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
-	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
+	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium and Firefox ESR"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
 	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
@@ -113,10 +116,11 @@ run: build
 # network and dpkg; as soon as the packages are in, `make web` builds the browser pages beside the
 # native build (emscripten, into $(OUT)/web; its output in $(BUILD)/web.log) for ctest's web tests
 # (tests/web/); then CMake configures again, finding the programs installed meanwhile (xvfb-run,
-# jekyll, chromium), and ctest runs every test. The tests' llvmpipe skips LLVM's optimisation passes
-# and compiles 128-bit vectors (GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128, as the grader's renders
-# do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's
-# small renders spend more CPU compiling shaders than drawing them (the vectors: ctest 163 s, not 168).
+# jekyll, chromium, firefox-esr), and ctest runs every test. The tests' llvmpipe skips LLVM's
+# optimisation passes and compiles 128-bit vectors (GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128, as
+# the grader's renders do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks
+# it) and the suite's small renders spend more CPU compiling shaders than drawing them (the vectors:
+# ctest 163 s, not 168).
 test: PACKAGES += catch2 python3-venv
 test: deps
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
@@ -203,9 +207,12 @@ site: configure
 # The site's live embeds in headless Chromium (site/tests/live_test.py), after building the site with the
 # web stages: every stage's embed renders, the exercises' controls change the frame and back, without
 # WebGL the pictures stay; screenshots in $(BUILD)/site-tests/live/. About two minutes on two cores, so
-# not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails.
+# not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails. The same
+# embeds in Firefox ESR under Xvfb first (site/tests/live_firefox_test.py, about 30 s).
 .PHONY: site-live
+site-live: PACKAGES += $(FIREFOX_PACKAGE) xvfb
 site-live: site
+	@! grep -Eq '^T10_(FIREFOX|XVFB):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site-live
 
 # site-serve rebuilds the site only when something it is made from (site/, the programs in $(BIN)/)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The web stages (make web, out/web/<stage>/index.html) driven in headless Chromium like the binaries.
+"""The web stages (make web, out/web/<stage>/index.html) driven in Chromium and Firefox like the binaries.
 
 usage: web_test.py COMMAND --web OUT_WEB --out DIR [options]
 
@@ -20,10 +20,17 @@ Commands:
            own, so getExtension returns null as in a browser without float render targets) the page
            ends in "error" and shows the message, and draws no frame.
   compare  --stage S --expect pass|fail: S's ?compare=1 page sets dataset.t10Verdict to the expected verdict.
+  goldens  --case STAGE GOLDEN REJECTS ...: golden for each case in turn, in one browser (REJECTS: goldens
+           separated by commas, - for none); every case is judged, then the failures are reported.
+
+--browser firefox (golden and goldens): Firefox ESR on its own Xvfb display, driven over Marionette
+(tools/web/marionette.py; the same local server), WebGL 2 on Mesa llvmpipe without ANGLE. Headless
+Firefox has no WebGL here, hence the display. It never runs a script before the page's own.
 
 --renderer: llvmpipe (ANGLE on Mesa's GL ES: the goldens' rasteriser, with EXT_texture_norm16 for the
 stages' GL_R16 key) or swiftshader (ANGLE on SwiftShader; it has no EXT_texture_norm16).
-Exit 0: passed; 1: failed (what and why on stderr); 77: cannot run here (no such page), said why.
+Exit 0: passed; 1: failed (what and why on stderr); 77: cannot run here (no such page, no browser or
+Xvfb), said why.
 """
 import argparse
 import json
@@ -61,20 +68,32 @@ NO_FLOAT_TARGETS = r"""
 """
 
 
-class Page(web_page.StagePage):
-    """One Chromium with one tab on a local server over out/web, as the command line asks."""
-
-    def __init__(self, args, scripts=()):
-        self.args = args
-        super().__init__(args.web, args.chromium, os.path.join(args.out, "chromium.log"), cdp.RENDERERS[args.renderer],
-                         time.monotonic() + args.timeout, scripts)
+class Announced:
+    """A stage's page opened by stage and query, said on stdout; waits bounded by --timeout."""
 
     def open(self, stage, query):
         url = super().open(f"{stage}/index.html?{query}")
-        print(f"loading {url} ({self.args.renderer})", flush=True)
+        print(f"loading {url} ({self.engine})", flush=True)
 
     def settled(self, timeout=None):
         return super().settled(timeout or self.args.timeout * 0.8)
+
+
+class Page(Announced, web_page.StagePage):
+    """One Chromium with one tab on a local server over out/web, as the command line asks."""
+
+    def __init__(self, args, scripts=()):
+        self.args, self.engine = args, args.renderer
+        super().__init__(args.web, args.chromium, os.path.join(args.out, "chromium.log"), cdp.RENDERERS[args.renderer],
+                         time.monotonic() + args.timeout, scripts)
+
+
+class FirefoxPage(Announced, web_page.FirefoxStagePage):
+    """One Firefox on its own Xvfb display (WebGL 2 on Mesa llvmpipe) on a local server over out/web."""
+
+    def __init__(self, args):
+        self.args, self.engine = args, "Firefox, llvmpipe"
+        super().__init__(args.web, args.firefox, os.path.join(args.out, "firefox.log"), time.monotonic() + args.timeout)
 
 
 def page_folder(args, stage):
@@ -115,6 +134,8 @@ def rendered(page, stage):
     if state["state"] != "rendered":
         raise Failure(f"{stage} ended in {state['state']!r}: {state['error']!r}{page.problems()}")
     first = next((s["at"] for s in state["states"] if s["state"] == "rendered"), None)
+    if first is None:  # no record of the page's states (Firefox): when the wait saw it, in the page's time
+        first = page.evaluate("performance.now()")
     return state, first
 
 
@@ -127,6 +148,22 @@ def run_golden(args, page):
     print(f"{args.stage}: {width}x{height}, rendered {first / 1000:.2f} s after navigation started; "
           f"download {download_size(folder) / 1e6:.2f} MB (uncompressed)", flush=True)
     judge(args, actual, args.golden, args.reject)
+
+
+def run_goldens(args, page):
+    """Each --case in turn in the one browser; every case is judged, then the failures are reported."""
+    failures = []
+    for stage, golden, rejects in args.case:
+        case = argparse.Namespace(**vars(args))
+        case.stage, case.golden, case.name = stage, golden, None
+        case.reject = [r for r in rejects.split(",") if r and r != "-"]
+        try:
+            run_golden(case, page)
+        except Failure as failure:
+            print(f"FAILED: {stage}: {failure}", flush=True)
+            failures.append(f"{stage}: {failure}")
+    if failures:
+        raise Failure(f"{len(failures)} of {len(args.case)} pages failed:\n  " + "\n  ".join(failures))
 
 
 def run_live(args, page):
@@ -194,10 +231,12 @@ def run_compare(args, page):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("command", choices=["golden", "live", "nofloat", "compare"])
+    ap.add_argument("command", choices=["golden", "goldens", "live", "nofloat", "compare"])
     ap.add_argument("--web", required=True, help="the built pages (out/web)")
-    ap.add_argument("--out", required=True, help="folder for frames, screenshots and Chromium's log")
-    ap.add_argument("--stage", required=True)
+    ap.add_argument("--out", required=True, help="folder for frames, screenshots and the browser's log")
+    ap.add_argument("--stage", help="the stage's page (every command but goldens)")
+    ap.add_argument("--case", nargs=3, action="append", default=[], metavar=("STAGE", "GOLDEN", "REJECTS"),
+                    help="goldens: STAGE's frame matches GOLDEN and not each of REJECTS (comma-separated, - for none)")
     ap.add_argument("--name", help="file name for the frame (default: the stage)")
     ap.add_argument("--query", default="", help="more query parameters (the stage's options)")
     ap.add_argument("--golden", help="the golden the frame must match (a stage name)")
@@ -208,24 +247,41 @@ def main():
     ap.add_argument("--goldens", default=os.path.join(HERE, "..", "golden"))
     ap.add_argument("--tolerance", default=os.path.join(HERE, "..", "golden", "web.tolerance"))
     ap.add_argument("--imgcompare", help="the project's imgcompare program")
+    ap.add_argument("--browser", choices=["chromium", "firefox"], default="chromium",
+                    help="firefox: Firefox ESR under Xvfb over Marionette (golden and goldens only)")
     ap.add_argument("--chromium", default="chromium")
-    ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe")
+    ap.add_argument("--firefox", default="firefox-esr")
+    ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe", help="Chromium's WebGL")
     ap.add_argument("--timeout", type=float, default=120, help="seconds for the whole test")
     args = ap.parse_args()
     if args.command in ("golden", "live") and not (args.golden and args.imgcompare):
         ap.error(f"{args.command} needs --golden and --imgcompare")
+    if args.command == "goldens" and not (args.case and args.imgcompare):
+        ap.error("goldens needs --case STAGE GOLDEN REJECTS and --imgcompare")
+    if args.command != "goldens" and not args.stage:
+        ap.error(f"{args.command} needs --stage")
     if args.command == "live" and not (args.set and args.then and "=" in args.set):
         ap.error("live needs --set NAME=VALUE and --then GOLDEN")
     if args.command == "compare" and not args.expect:
         ap.error("compare needs --expect pass|fail")
-    if not shutil.which(args.chromium):
-        print(f"SKIP: {args.chromium}: not found (apt-get install chromium)", file=sys.stderr)
+    if args.browser == "firefox" and args.command not in ("golden", "goldens"):
+        ap.error("--browser firefox runs golden and goldens only")
+    needed = [args.chromium] if args.browser == "chromium" else [args.firefox, "Xvfb"]
+    missing = [program for program in needed if not shutil.which(program)]
+    if missing:
+        print(f"SKIP: {', '.join(missing)}: not found (apt-get install "
+              f"{'chromium' if args.browser == 'chromium' else 'firefox-esr xvfb'})", file=sys.stderr)
         return 77
     os.makedirs(args.out, exist_ok=True)
-    page_folder(args, args.stage)
-    page = Page(args, scripts=(NO_FLOAT_TARGETS,) if args.command == "nofloat" else ())
+    for stage in [args.stage] if args.stage else [case[0] for case in args.case]:
+        page_folder(args, stage)
+    if args.browser == "firefox":
+        page = FirefoxPage(args)
+    else:
+        page = Page(args, scripts=(NO_FLOAT_TARGETS,) if args.command == "nofloat" else ())
     try:
-        {"golden": run_golden, "live": run_live, "nofloat": run_nofloat, "compare": run_compare}[args.command](args, page)
+        {"golden": run_golden, "goldens": run_goldens, "live": run_live, "nofloat": run_nofloat,
+         "compare": run_compare}[args.command](args, page)
     finally:
         page.close()
     print("ok")

@@ -8,13 +8,64 @@
 # tests/golden/web.tolerance. On SwiftShader (--use-angle=swiftshader, headless Chromium's own) the
 # first and last parts run too, under tests/golden/web-swiftshader.tolerance (looser: another
 # rasteriser). Each tolerance file gives its measurements and reasons.
+#
+# Firefox ESR, the second engine: one Firefox on its own Xvfb display (headless Firefox has no WebGL
+# here) loads the five stage pages in turn, driven over Marionette (tools/web/marionette.py). Its WebGL
+# runs on Mesa llvmpipe without ANGLE; the frames match the goldens under web.tolerance (measured there).
+# Registered with or without Chromium; it skips (77), saying why, without emscripten, Firefox or Xvfb.
 find_program(T10_EMCC emcc)
 find_program(T10_CHROMIUM NAMES chromium chromium-browser)
+find_program(T10_FIREFOX NAMES firefox-esr firefox)
+find_program(T10_XVFB Xvfb)
 set(T10_WEB_PAGES ${PROJECT_SOURCE_DIR}/out/web CACHE PATH "The web stages the browser tests load (make web)")
 set(T10_WEB_BUILD ${PROJECT_SOURCE_DIR}/build-web CACHE PATH "The web build (emcmake cmake --preset web)")
 set(WEB_TEST ${CMAKE_CURRENT_SOURCE_DIR}/web/web_test.py)
 set(WEB_OUT ${CMAKE_CURRENT_BINARY_DIR}/web-out)
 set(GOLDENS ${CMAKE_CURRENT_SOURCE_DIR}/golden)
+
+# Each stage's neighbours, whose goldens its frame must not match (the tests can fail): t10_rejects_<stage>.
+set(parts ${T10_GOLDEN_STAGES})
+list(LENGTH parts count)
+math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+    list(GET parts ${i} stage)
+    set(t10_rejects_${stage} "")
+    foreach(step -1 1)
+        math(EXPR j "${i} + ${step}")
+        if(j GREATER_EQUAL 0 AND j LESS_EQUAL last)
+            list(GET parts ${j} neighbour)
+            list(APPEND t10_rejects_${stage} ${neighbour})
+        endif()
+    endforeach()
+endforeach()
+
+set(firefox_test "web: the stage pages in Firefox ESR (Xvfb) match their goldens")
+set(missing "")
+foreach(need T10_EMCC T10_FIREFOX T10_XVFB)
+    if(NOT ${need})
+        string(APPEND missing " ${need}")
+    endif()
+endforeach()
+if(missing)
+    add_test(NAME "${firefox_test}"
+             COMMAND sh -c "echo 'SKIP: not found:${missing} (apt-get install emscripten firefox-esr xvfb; make test installs them on Debian)' >&2; exit 77")
+else()
+    # Every stage against its golden, rejecting its neighbours'; extras' defaults draw Part 3's frame.
+    set(cases "")
+    foreach(stage ${parts})
+        list(JOIN t10_rejects_${stage} "," rejects)
+        list(APPEND cases --case ${stage} ${stage} ${rejects})
+    endforeach()
+    if(TARGET extras)
+        list(APPEND cases --case extras tutorial10_part3_gaussian tutorial10_part2_bloom)
+    endif()
+    add_test(NAME "${firefox_test}"
+             COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${WEB_TEST} goldens --browser firefox --firefox ${T10_FIREFOX}
+                     --web ${T10_WEB_PAGES} --imgcompare $<TARGET_FILE:imgcompare> --goldens ${GOLDENS}
+                     --out ${WEB_OUT}/firefox --timeout 180 ${cases})
+endif()
+# 19 s alone on two cores (one Firefox start, five pages); the bounds leave room for make test's load.
+set_tests_properties("${firefox_test}" PROPERTIES TIMEOUT 240 LABELS web SKIP_RETURN_CODE 77)
 
 set(missing "")
 if(NOT T10_EMCC)
@@ -43,22 +94,11 @@ function(t10_add_web_test name command stage)
 endfunction()
 
 # Every stage at the goldens' settings matches its golden and is told apart from its neighbours'.
-set(parts ${T10_GOLDEN_STAGES})
-list(LENGTH parts count)
-math(EXPR last "${count} - 1")
-foreach(i RANGE ${last})
-    list(GET parts ${i} stage)
+foreach(stage ${parts})
     set(rejects "")
-    if(i GREATER 0)
-        math(EXPR before "${i} - 1")
-        list(GET parts ${before} neighbour)
+    foreach(neighbour ${t10_rejects_${stage}})
         list(APPEND rejects --reject ${neighbour})
-    endif()
-    if(i LESS last)
-        math(EXPR after "${i} + 1")
-        list(GET parts ${after} neighbour)
-        list(APPEND rejects --reject ${neighbour})
-    endif()
+    endforeach()
     t10_add_web_test("${stage} in Chromium matches its golden" golden ${stage} --golden ${stage} ${rejects})
 endforeach()
 

@@ -67,6 +67,41 @@ def start_server(root, port=0):
     return server
 
 
+@contextlib.contextmanager
+def serving(root):
+    """start_server(root) for the block: yields its base URL (with a trailing /), then ends it."""
+    server = start_server(root)
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+
+
+def seconds_left(deadline):
+    """Seconds until `deadline` (time.monotonic(); None: no limit); Failure once it has passed."""
+    if deadline is None:
+        return float("inf")
+    left = deadline - time.monotonic()
+    if left <= 0:
+        raise Failure("time limit reached")
+    return left
+
+
+def end_group(proc, wait=3):
+    """Ends `proc` and every process in its group (started with start_new_session), by group id: TERM,
+    then KILL for any helper that outlives it."""
+    for sig in (signal.SIGTERM, signal.SIGKILL):
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            return
+        try:
+            proc.wait(timeout=wait)
+        except subprocess.TimeoutExpired:
+            pass
+
+
 def find_chromium():
     for name in ("chromium", "chromium-browser", "google-chrome"):
         path = shutil.which(name)
@@ -109,12 +144,7 @@ class Browser:
         self.events = []
 
     def remaining(self):
-        if self.deadline is None:
-            return float("inf")
-        left = self.deadline - time.monotonic()
-        if left <= 0:
-            raise Failure("time limit reached")
-        return left
+        return seconds_left(self.deadline)
 
     def _read(self, timeout):
         ready, _, _ = select.select([self.from_chrome], [], [], timeout)
@@ -179,16 +209,7 @@ class Browser:
                 except subprocess.TimeoutExpired:
                     pass
         finally:
-            # Whatever is left of the process group (helpers included) is ended, by group id.
-            for sig in (signal.SIGTERM, signal.SIGKILL):
-                try:
-                    os.killpg(self.proc.pid, sig)
-                except ProcessLookupError:
-                    break
-                try:
-                    self.proc.wait(timeout=3)
-                except subprocess.TimeoutExpired:
-                    pass
+            end_group(self.proc)  # whatever is left of it (helpers included)
             for fd in (self.to_chrome, self.from_chrome):
                 try:
                     os.close(fd)
@@ -203,18 +224,14 @@ def browsing(root, chromium, log_path, deadline=None, gpu_args=("--disable-gpu",
     trailing /); afterwards ends both and removes the profile. root None: no server (base URL None),
     for a page served by someone else on 127.0.0.1."""
     profile = tempfile.mkdtemp(prefix="t10-chromium-")
-    browser = server = None
+    browser = None
     try:
         browser = Browser(chromium, profile, log_path, deadline, gpu_args, window)
-        if root is not None:
-            server = start_server(root)
-        yield browser, server and f"http://127.0.0.1:{server.server_address[1]}/"
+        with serving(root) if root is not None else contextlib.nullcontext() as base:
+            yield browser, base
     finally:
         if browser:
             browser.close()
-        if server:
-            server.shutdown()
-            server.server_close()
         shutil.rmtree(profile, ignore_errors=True)
 
 

@@ -14,13 +14,15 @@ Exit status: 0 rendered, 1 error or a time-out, 2 bad usage.
 Chromium drives WebGL 2 through SwiftShader here (no GPU): --use-angle=swiftshader with
 --enable-unsafe-swiftshader (T10_CHROMIUM_FLAGS adds flags). The DevTools client is cdp.py, beside
 this file. Importable: StagePage is one tab on the stages' pages, which the web stages' tests
-(tests/web/web_test.py) drive; render_page() is this script's report.
+(tests/web/web_test.py) drive, and FirefoxStagePage the same in Firefox (marionette.py, beside this
+file); render_page() is this script's report.
 """
 import argparse
 import base64
 import contextlib
 import json
 import os
+import re
 import struct
 import sys
 import tempfile
@@ -29,6 +31,7 @@ import zlib
 
 sys.dont_write_bytecode = True
 from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
+from web import marionette  # noqa: E402  (the Firefox client)
 
 Failure = cdp.Failure
 
@@ -165,6 +168,42 @@ class StagePage:
     def screenshot(self, path):
         """The whole page, as a reader scrolling it would see it."""
         cdp.full_page_screenshot(self.browser, self.session, path, self.size[0], self.size[1])
+
+
+class FirefoxStagePage(StagePage):
+    """StagePage in one Firefox on its own display (marionette.py): the page's state, its wait and its
+    frame are StagePage's; opening, evaluating, the script errors and the screenshot are Firefox's.
+    Marionette runs no script before a page's own, so `states` stays empty."""
+
+    def __init__(self, root, firefox, log_path, deadline=None, size=(1400, 1000)):
+        self.size = size
+        self._stack = contextlib.ExitStack()
+        self.browser, self.base = self._stack.enter_context(marionette.browsing(root, firefox, log_path, deadline, size))
+        self._log_seen = 0
+
+    def evaluate(self, expression, await_promise=False):
+        return self.browser.evaluate(expression)  # WebDriver awaits a returned promise anyway
+
+    def open(self, path):
+        url = self.base + path
+        self.browser.navigate(url)
+        return url
+
+    def problems(self):
+        """Script errors and console errors written to Firefox's log since the last call."""
+        lines = self.browser.log_lines()
+        # Not Firefox's note on each texture level it clears for the page ("lazy initialization"), nor
+        # its own modules' errors, which name the module unquoted ("console.error: RSLoader: ", its
+        # experiments' fetch refused); the page's console arguments are printed quoted.
+        found = [line for line in lines[self._log_seen:]
+                 if line.startswith("JavaScript error:")
+                 or (line.startswith("console.error:") and not re.match(r"console\.error: [\w.-]+: ", line))
+                 or ("WebGL warning" in line[:60] and "lazy initialization" not in line)]
+        self._log_seen = len(lines)
+        return "".join(f"\n  {line[:400]}" for line in found[:10])
+
+    def screenshot(self, path):
+        self.browser.screenshot(path)
 
 
 def console_lines(events):
