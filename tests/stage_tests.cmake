@@ -103,7 +103,7 @@ t10_add_layer_mutant("platform that includes content" platform/src/context.cpp
                      "#include \"t10/tga.hpp\"" "context.cpp:1: includes \"t10/tga.hpp\" of content")
 t10_add_layer_mutant("stage.hpp that includes the command line" frame/include/t10/stage.hpp
                      "#include \"t10/cli.hpp\"" "stage.hpp:1: includes \"t10/cli.hpp\" of frame \\(stage.hpp may include only")
-t10_add_layer_mutant("two files that need each other" frame/src/view_catalogue.cpp
+t10_add_layer_mutant("two files that need each other" frame/src/views/view_catalogue.cpp
                      "#include \"t10/views.hpp\"" "cycle between files: (view_catalogue -> views -> view_catalogue|views -> view_catalogue -> views)")
 # grader/: its folders are the stages of its pipeline, checked the same way (layers.py --grader), and
 # copies of grader/ with one include added must be reported.
