@@ -8,9 +8,9 @@
 #     Tutorial10.cpp's header line "Tutorial 10, Part N" (make student writes it); the reference is
 #     then the Nth of T10_GOLDEN_STAGES, and its tests/golden/<reference>.tolerance is packaged at
 #     /t10/compare/reference.tolerance;
-#   - the golden comparison itself (t10_compare_export: common/base compare.cpp behind C functions)
+#   - the golden comparison itself (t10_compare_export: common/base compare.cpp behind the C functions of common/platform/web/compare_export.cpp)
 #     linked in, so the page judges with the tests' code;
-#   - common/base/src/compare_page.js as --post-js (it acts only with ?compare=1) and a --pre-js
+#   - common/platform/web/compare_page.js as --post-js (it acts only with ?compare=1) and a --pre-js
 #     naming the reference (t10CompareReference);
 #   - the reference stage's page built with it (a dependency), since the compare page loads it.
 # A folder whose part cannot be told still builds; its compare page says why it has no reference.
@@ -36,8 +36,8 @@ function(t10_web_compare target folder)
     target_link_libraries(${target} PRIVATE t10_compare_export)
     target_link_options(${target} PRIVATE
         "SHELL:--pre-js ${config}"
-        "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/base/src/compare_page.js")
-    set(depends ${config} ${PROJECT_SOURCE_DIR}/common/base/src/compare_page.js)
+        "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/platform/web/compare_page.js")
+    set(depends ${config} ${PROJECT_SOURCE_DIR}/common/platform/web/compare_page.js)
     if(reference)
         set(tolerance ${PROJECT_SOURCE_DIR}/tests/golden/${reference}.tolerance)
         target_link_options(${target} PRIVATE "SHELL:--preload-file ${tolerance}@/t10/compare/reference.tolerance")

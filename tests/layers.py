@@ -3,7 +3,8 @@
 
 usage: layers.py COMMON_DIR
 
-Each layer folder holds include/t10/*.hpp and src/*.cpp. A file may include (`#include "..."`)
+Each layer folder holds include/t10/*.hpp and src/ (its sources; the frame layer's in a folder per
+group of services, private headers beside them). A file may include (`#include "..."`)
 only headers of its own layer or of the layers it sits on:
 
     base      (GL-free: contract, errors, files, median, sizes, JSON, CLI11 checks)

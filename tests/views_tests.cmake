@@ -1,4 +1,4 @@
-# Tests of the view selector (common/frame/src/views.cpp, --view). Included from tests/CMakeLists.txt,
+# Tests of the view selector (common/frame/src/views/views.cpp, --view). Included from tests/CMakeLists.txt,
 # which has set BIN, DUMPS, EXPECT and T10_STAGES.
 #
 # Every view of every stage renders one small frame without a GL error (a GL error fails the run),

@@ -72,8 +72,8 @@ Programs programs(const std::string& fragment) {
     p.fragment = t10::translateToGlslEs(fragment, "test.frag", t10::GlslStage::Fragment);
     p.es = link(vertex.source, p.fragment.source);
     glUseProgram(p.es);
-    for (const auto& s : p.fragment.samplerBindings) glUniform1i(glGetUniformLocation(p.es, s.name.c_str()), s.value);
-    for (const auto& b : p.fragment.blockBindings)
+    for (const auto& s : p.fragment.layout.samplerUnits) glUniform1i(glGetUniformLocation(p.es, s.name.c_str()), s.value);
+    for (const auto& b : p.fragment.layout.blockBindings)
         glUniformBlockBinding(p.es, glGetUniformBlockIndex(p.es, b.name.c_str()), static_cast<GLuint>(b.value));
     return p;
 }
@@ -82,7 +82,7 @@ Programs programs(const std::string& fragment) {
 // uniform the translator declared) and reads the RGBA32F target back.
 std::vector<float> draw(GLuint program, bool es, const t10::GlslEsShader& fragment, GLuint index) {
     glUseProgram(program);
-    if (es) glUniform1i(glGetUniformLocation(program, fragment.subroutineUniforms.at(0).uniformName.c_str()), static_cast<GLint>(index));
+    if (es) glUniform1i(glGetUniformLocation(program, fragment.layout.subroutineUniforms.at(0).uniformName.c_str()), static_cast<GLint>(index));
     else glUniformSubroutinesuiv(GL_FRAGMENT_SHADER, 1, &index); // after glUseProgram: it resets them
     glClearColor(-1.0f, -1.0f, -1.0f, -1.0f);
     glClear(GL_COLOR_BUFFER_BIT);

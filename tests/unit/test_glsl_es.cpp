@@ -40,7 +40,7 @@ std::string errorOf(const std::string& source, t10::GlslStage stage = t10::GlslS
 
 int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
 
-int valueOf(const std::vector<t10::GlslEsBinding>& list, const std::string& name) {
+int valueOf(const std::vector<t10::NamedValue>& list, const std::string& name) {
     for (const auto& b : list)
         if (b.name == name) return b.value;
     return -1;
@@ -70,16 +70,16 @@ TEST_CASE("every shader of the repository translates, line for line", "[glsl_es]
 TEST_CASE("the post-process shaders report the contract's units, binding and locations", "[glsl_es]") {
     const fs::path root(T10_SOURCE_ROOT);
     const auto post = translate(readText(root / "extras/PostProcess.frag"));
-    CHECK(valueOf(post.samplerBindings, "s2AccumulationTexture") == int(t10::contract::kAccumulationUnit));
-    CHECK(valueOf(post.samplerBindings, "s2LuminanceKeyTexture") == int(t10::contract::kLuminanceKeyUnit));
-    CHECK(valueOf(post.samplerBindings, "s2BloomTexture") == int(t10::contract::kBloomUnit));
-    CHECK(valueOf(post.blockBindings, "InvResolution") == int(t10::contract::kInvResolutionBinding));
-    CHECK(valueOf(post.uniformLocations, "fYwhite") == t10::contract::extras::kWhitePointLocation);
-    CHECK(valueOf(post.uniformLocations, "bBloom") == t10::contract::extras::kBloomSwitchLocation);
-    CHECK(valueOf(post.uniformLocations, "fBloomStrength") == t10::contract::extras::kBloomStrengthLocation);
-    CHECK(valueOf(post.uniformLocations, "bRangeMapping") == t10::contract::extras::kRangeMappingLocation);
-    CHECK(post.samplerBindings.size() == 3);
-    CHECK(post.uniformLocations.size() == 4);
+    CHECK(valueOf(post.layout.samplerUnits, "s2AccumulationTexture") == int(t10::contract::kAccumulationUnit));
+    CHECK(valueOf(post.layout.samplerUnits, "s2LuminanceKeyTexture") == int(t10::contract::kLuminanceKeyUnit));
+    CHECK(valueOf(post.layout.samplerUnits, "s2BloomTexture") == int(t10::contract::kBloomUnit));
+    CHECK(valueOf(post.layout.blockBindings, "InvResolution") == int(t10::contract::kInvResolutionBinding));
+    CHECK(valueOf(post.layout.uniformLocations, "fYwhite") == t10::contract::extras::kWhitePointLocation);
+    CHECK(valueOf(post.layout.uniformLocations, "bBloom") == t10::contract::extras::kBloomSwitchLocation);
+    CHECK(valueOf(post.layout.uniformLocations, "fBloomStrength") == t10::contract::extras::kBloomStrengthLocation);
+    CHECK(valueOf(post.layout.uniformLocations, "bRangeMapping") == t10::contract::extras::kRangeMappingLocation);
+    CHECK(post.layout.samplerUnits.size() == 3);
+    CHECK(post.layout.uniformLocations.size() == 4);
     // The block gets std140 (ES would make it shared); the fragment output keeps its location.
     CHECK_THAT(post.source, Catch::Contains("layout(std140) uniform InvResolution"));
     CHECK_THAT(post.source, Catch::Contains("layout(location = 0) out vec3 v3ColourOut;"));
@@ -90,7 +90,7 @@ TEST_CASE("the post-process shaders report the contract's units, binding and loc
     CHECK_THAT(scene.source, Catch::Contains("layout(location = 5) in vec4 v4VertexUVBounds;")); // vertex input: kept
     CHECK_THAT(scene.source, Catch::Contains("\nflat out vec4 v4UVBounds;"));                      // varying: stripped
     CHECK_THAT(scene.source, Catch::Contains("layout(std140) uniform Camera"));
-    CHECK(valueOf(scene.blockBindings, "Camera") == 0);
+    CHECK(valueOf(scene.layout.blockBindings, "Camera") == 0);
 }
 
 TEST_CASE("a subroutine becomes an int uniform and a dispatch calling the function of each index", "[glsl_es]") {
@@ -105,10 +105,13 @@ TEST_CASE("a subroutine becomes an int uniform and a dispatch calling the functi
                                "out vec4 c;\n"
                                "void main() { vec2 y[2]; c = vec4(PickA(1.0, y), PickB(2.0, y), 0.0, 1.0); }\n";
     const auto es = translate(source);
-    REQUIRE(es.subroutineUniforms.size() == 2);
-    CHECK(es.subroutineUniforms[0].location == 1);
-    CHECK(es.subroutineUniforms[1].location == 0);
-    const std::string a = es.subroutineUniforms[0].uniformName, b = es.subroutineUniforms[1].uniformName;
+    REQUIRE(es.layout.subroutineUniforms.size() == 2);
+    CHECK(es.layout.subroutineUniforms[0].location == 1);
+    CHECK(es.layout.subroutineUniforms[1].location == 0);
+    // The stage the platform's glUniformSubroutinesuiv matches them by (gl_web.cpp).
+    CHECK(es.layout.subroutineUniforms[0].stage == t10::GlslStage::Fragment);
+    CHECK(es.layout.subroutineUniforms[1].stage == t10::GlslStage::Fragment);
+    const std::string a = es.layout.subroutineUniforms[0].uniformName, b = es.layout.subroutineUniforms[1].uniformName;
     CHECK(a != b);
     CHECK_THAT(es.source, Catch::Contains("uniform int " + a + ";"));
     CHECK_THAT(es.source, Catch::Contains("uniform int " + b + ";"));
@@ -136,8 +139,8 @@ TEST_CASE("generated names never collide with the shader's own", "[glsl_es]") {
                                "layout(index = 0) subroutine(S) void f(float x) {}\n"
                                "void main() { U(t10Arg0 + t10SubroutineIndexU); }\n";
     const auto es = translate(source);
-    REQUIRE(es.subroutineUniforms.size() == 1);
-    const std::string name = es.subroutineUniforms[0].uniformName;
+    REQUIRE(es.layout.subroutineUniforms.size() == 1);
+    const std::string name = es.layout.subroutineUniforms[0].uniformName;
     CHECK(name != "t10SubroutineIndexU");
     CHECK(name.find("__") == std::string::npos);
     CHECK(name.rfind("gl_", 0) != 0);
@@ -150,9 +153,9 @@ TEST_CASE("comments do not fool the translator", "[glsl_es]") {
                               "/* layout(binding = 2)\n uniform sampler2D fake2; double d; */\n"
                               "layout(binding = 3) /* binding = 9 */ uniform sampler2D real; // binding = 8\n"
                               "out vec4 c; void main() { c = texture(real, vec2(0)); }\n");
-    REQUIRE(es.samplerBindings.size() == 1);
-    CHECK(es.samplerBindings[0].name == "real");
-    CHECK(es.samplerBindings[0].value == 3);
+    REQUIRE(es.layout.samplerUnits.size() == 1);
+    CHECK(es.layout.samplerUnits[0].name == "real");
+    CHECK(es.layout.samplerUnits[0].value == 3);
 }
 
 TEST_CASE("layouts split over lines keep every line where it was", "[glsl_es]") {
@@ -162,10 +165,10 @@ TEST_CASE("layouts split over lines keep every line where it was", "[glsl_es]") 
                                "out vec4 c;\nvoid main() { c = texture(s[1], vec2(f)); }\n";
     const auto es = translate(source);
     CHECK(lineCount(es.source) == lineCount(source));
-    CHECK(valueOf(es.samplerBindings, "s[0]") == 4);
-    CHECK(valueOf(es.samplerBindings, "s[1]") == 5);
-    CHECK(valueOf(es.uniformLocations, "f") == 3);
-    CHECK(es.uniformLocations.size() == 1);
+    CHECK(valueOf(es.layout.samplerUnits, "s[0]") == 4);
+    CHECK(valueOf(es.layout.samplerUnits, "s[1]") == 5);
+    CHECK(valueOf(es.layout.uniformLocations, "f") == 3);
+    CHECK(es.layout.uniformLocations.size() == 1);
     const auto lines = [](const std::string& text) {
         std::vector<std::string> out;
         std::istringstream in(text);

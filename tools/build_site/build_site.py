@@ -329,7 +329,7 @@ def cli_help(stages, bin_dir):
     return {"groups": groups, "last": stages[-1]["name"]}
 
 
-# Stages that take --then (common/frame/src/app.cpp): each of their renders for the site is a run of
+# Stages that take --then (common/frame/src/loop/app_native.cpp): each of their renders for the site is a run of
 # one process per stage, which makes the driver, LLVM's code for the shaders and the scene once (the
 # four stages' 15 pictures: 7.5 s instead of 9.6 s, the same bits). extras refuses it (its options
 # are globals the runs would share).

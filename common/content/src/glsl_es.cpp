@@ -85,7 +85,7 @@ struct SubroutineFunction {
     int line;
 };
 
-struct SubroutineUniform {
+struct SubroutineDeclaration { // a subroutine uniform as declared (ProgramLayout holds what the host sets)
     std::string typeName;
     std::string name;
     int location;
@@ -275,8 +275,8 @@ private:
     void inOutDeclaration(const Prefix& p, std::size_t first);
     void subroutineDeclaration(const Prefix& p, std::size_t first, std::size_t last);
     void subroutineFunction(const Prefix& p, std::size_t first, std::size_t last);
-    std::vector<std::pair<int, std::string>> subroutineCallees(const SubroutineUniform& u, std::size_t& lastEnd) const;
-    std::string dispatchFunction(const SubroutineUniform& u, const SubroutineType& type, const std::string& indexName,
+    std::vector<std::pair<int, std::string>> subroutineCallees(const SubroutineDeclaration& u, std::size_t& lastEnd) const;
+    std::string dispatchFunction(const SubroutineDeclaration& u, const SubroutineType& type, const std::string& indexName,
                                  const std::vector<std::pair<int, std::string>>& callees);
     std::string joinTokens(std::size_t from, std::size_t to) const;
     std::pair<std::string, std::string> parameter(std::size_t from, std::size_t to) const;
@@ -296,7 +296,7 @@ private:
     bool defaultPacking_ = false; // a `layout(std140) uniform;` default statement was seen
     std::unordered_map<std::string, SubroutineType> subroutineTypes_;
     std::vector<SubroutineFunction> subroutineFunctions_;
-    std::vector<SubroutineUniform> subroutineUniforms_;
+    std::vector<SubroutineDeclaration> subroutineUniforms_;
     GlslEsShader out_;
 };
 
@@ -705,16 +705,16 @@ void Translator::uniformDeclaration(const Prefix& p, std::size_t first, std::siz
         else if (q.name == "binding") binding = layoutValue(q);
         else refuse(q.line, "layout(" + q.name + ") on the uniform " + name, "GLSL ES 3.00 has no such uniform qualifier");
     }
-    if (location) out_.uniformLocations.push_back({name, *location});
+    if (location) out_.layout.uniformLocations.push_back({name, *location});
     if (binding) {
         const int unit = *binding;
         if (!isSamplerType(type))
             refuse(line, "layout(binding) on the " + type + " uniform " + name, "only samplers and uniform blocks take a binding in WebGL2");
         if (size && (*size == 0 || *size > 4096))
             refuse(line, "layout(binding) on the sampler array " + name, "its size must be an integer literal up to 4096");
-        if (!size) out_.samplerBindings.push_back({name, unit});
+        if (!size) out_.layout.samplerUnits.push_back({name, unit});
         for (std::uint64_t e = 0; size && e < *size; ++e)
-            out_.samplerBindings.push_back({name + "[" + std::to_string(e) + "]", unit + static_cast<int>(e)});
+            out_.layout.samplerUnits.push_back({name + "[" + std::to_string(e) + "]", unit + static_cast<int>(e)});
     }
     rewriteLayout(p, first, {});
 }
@@ -735,9 +735,9 @@ void Translator::uniformBlock(const Prefix& p, std::size_t first) {
             const int point = layoutValue(q);
             if (size && (*size == 0 || *size > 4096))
                 refuse(q.line, "layout(binding) on the block array " + name, "its size must be an integer literal up to 4096");
-            if (!size) out_.blockBindings.push_back({name, point});
+            if (!size) out_.layout.blockBindings.push_back({name, point});
             for (std::uint64_t e = 0; size && e < *size; ++e)
-                out_.blockBindings.push_back({name + "[" + std::to_string(e) + "]", point + static_cast<int>(e)});
+                out_.layout.blockBindings.push_back({name + "[" + std::to_string(e) + "]", point + static_cast<int>(e)});
         } else if (q.name == "std140" || q.name == "shared" || q.name == "packed") {
             packing = true;
             kept.push_back(q.name);
@@ -798,7 +798,7 @@ void Translator::subroutineDeclaration(const Prefix& p, std::size_t first, std::
             refuse(line, "a subroutine uniform without layout(location = L)", "the web platform sets subroutine uniforms by location: give it one");
         if (subroutineUniforms_.size() >= kMaxSubroutineUniforms)
             refuse(line, "more than " + std::to_string(kMaxSubroutineUniforms) + " subroutine uniforms", "the translator's limit");
-        for (const SubroutineUniform& u : subroutineUniforms_)
+        for (const SubroutineDeclaration& u : subroutineUniforms_)
             if (u.location == *location) fail(line, "two subroutine uniforms at location " + std::to_string(*location));
         subroutineUniforms_.push_back({std::string(text(type)), std::string(text(name)), *location, tokens_[first].begin,
                                        tokens_[last].end, line});
@@ -853,7 +853,7 @@ void Translator::subroutineFunction(const Prefix& p, std::size_t first, std::siz
 }
 
 // The defined functions of the uniform's type by index; lastEnd: the byte after the last body.
-std::vector<std::pair<int, std::string>> Translator::subroutineCallees(const SubroutineUniform& u, std::size_t& lastEnd) const {
+std::vector<std::pair<int, std::string>> Translator::subroutineCallees(const SubroutineDeclaration& u, std::size_t& lastEnd) const {
     std::vector<std::pair<int, std::string>> callees;
     lastEnd = 0;
     for (const SubroutineFunction& f : subroutineFunctions_) {
@@ -879,7 +879,7 @@ std::vector<std::pair<int, std::string>> Translator::subroutineCallees(const Sub
 
 // `ReturnType U(params) { if (index == 1) return f1(args); ... return lowestIndexFunction(args); }`: the
 // lowest index is also what an unset uniform (0) or an index without a function calls.
-std::string Translator::dispatchFunction(const SubroutineUniform& u, const SubroutineType& type,
+std::string Translator::dispatchFunction(const SubroutineDeclaration& u, const SubroutineType& type,
                                          const std::string& indexName,
                                          const std::vector<std::pair<int, std::string>>& callees) {
     std::vector<std::string> params, args;
@@ -903,7 +903,7 @@ void Translator::emitSubroutines() {
     for (const SubroutineFunction& f : subroutineFunctions_)
         for (const std::string& t : f.types)
             if (!subroutineTypes_.count(t)) fail(f.line, "the subroutine function " + f.name + " names an undeclared subroutine type " + t);
-    for (const SubroutineUniform& u : subroutineUniforms_) {
+    for (const SubroutineDeclaration& u : subroutineUniforms_) {
         const auto type = subroutineTypes_.find(u.typeName);
         if (type == subroutineTypes_.end()) fail(u.line, "the subroutine uniform " + u.name + " has an undeclared type " + u.typeName);
         std::size_t lastEnd = 0;
@@ -918,7 +918,7 @@ void Translator::emitSubroutines() {
         const std::string indexName = uniqueName(u.name.find("__") == std::string::npos ? "t10SubroutineIndex" + u.name : "t10SubroutineIndex");
         edits_.push_back({u.begin, u.end, "uniform int " + indexName + ";"});
         edits_.push_back({at, at, " " + dispatchFunction(u, type->second, indexName, callees)});
-        out_.subroutineUniforms.push_back({u.location, indexName});
+        out_.layout.subroutineUniforms.push_back({stage_, u.location, indexName});
     }
 }
 

@@ -6,10 +6,7 @@
 #include "t10/file.hpp"
 #include "t10/gl_object.hpp"
 
-#ifdef __EMSCRIPTEN__
-#include "t10/gl_web.hpp"
-#include "t10/glsl_es.hpp"
-#endif
+#include "platform_parts.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -52,26 +49,6 @@ std::string programLog(GLuint program) {
     return log.c_str();
 }
 
-#ifdef __EMSCRIPTEN__
-// The browser build: every file is translated to GLSL ES 3.00 as it is loaded (glsl_es.hpp), and
-// what the translation moved out of the source (sampler units, block bindings, explicit uniform
-// locations, the subroutine uniforms) is collected for the platform to apply after linking.
-std::string translateForWeb(const std::string& source, const std::filesystem::path& file, GLenum stage,
-                            web::ProgramLayout& layout) {
-    if (stage != GL_VERTEX_SHADER && stage != GL_FRAGMENT_SHADER)
-        throw Error(file.string() + ": only vertex and fragment shaders are available in the web build (WebGL 2 "
-                                    "has no geometry, tessellation or compute shaders)");
-    const GlslEsShader es =
-        translateToGlslEs(source, file.string(), stage == GL_VERTEX_SHADER ? GlslStage::Vertex : GlslStage::Fragment);
-    for (const GlslEsBinding& b : es.samplerBindings) layout.samplerUnits.push_back({b.name, b.value});
-    for (const GlslEsBinding& b : es.blockBindings) layout.blockBindings.push_back({b.name, b.value});
-    for (const GlslEsBinding& b : es.uniformLocations) layout.uniformLocations.push_back({b.name, b.value});
-    for (const GlslEsSubroutineUniform& u : es.subroutineUniforms)
-        layout.subroutineUniforms.push_back({stage, u.location, u.uniformName});
-    return es.source;
-}
-#endif
-
 } // namespace
 
 ShaderManager::ShaderManager(std::vector<std::string> searchDirs) : dirs_(std::move(searchDirs)) {}
@@ -92,18 +69,12 @@ GLuint ShaderManager::createProgram(std::initializer_list<std::string> fileNames
 
 GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) const {
     Program program(glCreateProgram());
-#ifdef __EMSCRIPTEN__
-    web::ProgramLayout layout;
-#endif
+    ProgramLayout layout; // what the platform sets after linking (platform_parts.hpp)
     std::vector<Shader> shaders;
     std::string names;
     for (const std::string& name : fileNames) {
         const std::filesystem::path file = find(name);
-#ifdef __EMSCRIPTEN__
-        const std::string source = translateForWeb(readText(file), file, stageFromExtension(file), layout);
-#else
-        const std::string source = readText(file);
-#endif
+        const std::string source = compiledSource(readText(file), file.string(), stageFromExtension(file), layout);
         Shader shader(glCreateShader(stageFromExtension(file)));
         const char* text = source.c_str();
         glShaderSource(shader.get(), 1, &text, nullptr);
@@ -120,9 +91,7 @@ GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) c
     glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) throw Error(names + ": program link failed:\n" + programLog(program.get()));
     for (const Shader& shader : shaders) glDetachShader(program.get(), shader.get());
-#ifdef __EMSCRIPTEN__
-    web::configureProgram(program.get(), layout);
-#endif
+    applyLayout(program.get(), layout);
     return program.release();
 }
 

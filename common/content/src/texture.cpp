@@ -9,6 +9,7 @@
 #include "t10/error.hpp"
 #include "t10/mipmaps.hpp"
 #include "t10/tga.hpp"
+#include "platform_parts.hpp"
 
 #include <algorithm>
 #include <string>
@@ -47,24 +48,11 @@ Formats formatsFor(int channels, bool srgb) {
 
 } // namespace
 
-Texture uploadTexture(const Image8& image, bool srgb, const TextureSampling& sampling) {
-    if (image.width < 1 || image.height < 1 || image.empty())
+Texture uploadTexture(const Image8& input, bool srgb, const TextureSampling& sampling) {
+    if (input.width < 1 || input.height < 1 || input.empty())
         throw Error("uploadTexture: empty image");
-#ifdef __EMSCRIPTEN__
-    // WebGL 2 has no texture swizzle, and makes mipmaps only of formats it can render to (not
-    // GL_SRGB8): grey and RGB images are uploaded as RGBA (g, g, g, 1) and (r, g, b, 1), which sample
-    // alike.
-    if (image.channels == 1 || image.channels == 3) {
-        Image8 rgba(image.width, image.height, 4);
-        const std::size_t pixels = image.data.size() / static_cast<std::size_t>(image.channels);
-        for (std::size_t i = 0; i < pixels; ++i) {
-            for (std::size_t c = 0; c < 3; ++c)
-                rgba.data[4 * i + c] = image.data[image.channels == 1 ? i : 3 * i + c];
-            rgba.data[4 * i + 3] = 255;
-        }
-        return uploadTexture(rgba, srgb, sampling);
-    }
-#endif
+    Image8 converted;
+    const Image8& image = uploadablePixels(input, converted); // the platform's (platform_parts.hpp)
     const Formats f = formatsFor(image.channels, srgb);
 
     // Restore whatever the active unit held afterwards (it may be unit 15, the accumulation texture).

@@ -25,7 +25,7 @@ struct ProgramMap {
     std::unordered_map<GLint, GLint> locations;           // our location -> WebGL's
     std::unordered_map<std::string, GLint> explicitNames; // uniform (array) name -> its explicit location
     std::unordered_map<std::string, GLint> lookedUp;      // name -> the location we handed out
-    std::vector<t10::web::SubroutineUniform> subroutines;
+    std::vector<t10::SubroutineUniform> subroutines;
     std::vector<GLint> subroutineLocations;               // WebGL's location of each subroutine's int
     GLint next = kLookedUpBase;
 };
@@ -80,7 +80,7 @@ GLuint boundTexture2D() {
     return static_cast<GLuint>(texture);
 }
 
-void recordExplicitLocations(GLuint program, ProgramMap& map, const std::vector<t10::web::NamedValue>& explicitLocations) {
+void recordExplicitLocations(GLuint program, ProgramMap& map, const std::vector<t10::NamedValue>& explicitLocations) {
     for (const auto& entry : explicitLocations) map.explicitNames[entry.name] = entry.value;
     GLint count = 0;
     glGetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
@@ -316,9 +316,12 @@ void glUniformSubroutinesuiv(GLenum shadertype, GLsizei count, const GLuint* ind
     const auto p = programs().find(g_current);
     if (p == programs().end()) throw t10::Error("glUniformSubroutinesuiv: no program made by ShaderManager is current");
     const ProgramMap& map = p->second;
+    const t10::GlslStage stage = shadertype == GL_VERTEX_SHADER     ? t10::GlslStage::Vertex
+                                 : shadertype == GL_FRAGMENT_SHADER ? t10::GlslStage::Fragment
+                                                                    : t10::GlslStage::Other;
     for (std::size_t i = 0; i < map.subroutines.size(); ++i) {
         const auto& subroutine = map.subroutines[i];
-        if (subroutine.shaderStage != shadertype || subroutine.location < 0 || subroutine.location >= count) continue;
+        if (subroutine.stage != stage || subroutine.location < 0 || subroutine.location >= count) continue;
         glUniform1i(map.subroutineLocations[i], static_cast<GLint>(indices[subroutine.location]));
     }
 }

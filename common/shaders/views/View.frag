@@ -1,4 +1,4 @@
-// The view selector's pass (common/frame/src/views.cpp): draws one buffer of the chain over framebuffer
+// The view selector's pass (common/frame/src/views/views.cpp): draws one buffer of the chain over framebuffer
 // 0. Each sampler holds a single-level texture view; each framebuffer pixel reads the texel at
 // pixel * texture size / framebuffer size (integer division), so a half-size level shows as 2x2
 // blocks and a test can find the texel behind every pixel. The encodings mirror t10::views.

@@ -7,8 +7,8 @@
 // - `#version 430 core` -> `#version 300 es` and default precisions (highp float, int and samplers);
 //   every other line keeps its line number, so the browser's compile log points into the file.
 //   Comments become spaces.
-// - `layout(binding = N)` leaves sampler uniforms and uniform blocks (reported in samplerBindings and
-//   blockBindings); `layout(location = N)` leaves plain uniforms (uniformLocations) and the varyings
+// - `layout(binding = N)` leaves sampler uniforms and uniform blocks (reported in the layout's
+//   samplerUnits and blockBindings); `layout(location = N)` leaves plain uniforms (uniformLocations) and the varyings
 //   between the stages (ES matches those by name); vertex inputs and fragment outputs keep theirs. A
 //   uniform block without a packing layout gets std140 (ES would make it `shared`, whose offsets the
 //   host would have to query; std140 is the layout the C++ structs follow).
@@ -18,31 +18,17 @@
 //   (GLSL 4.30 converts it implicitly; ES 3.00 has no implicit conversions).
 // - What has no ES 3.00 form (compute, images, buffers, doubles, ...) is an error, never dropped.
 #pragma once
+#include "t10/program_layout.hpp"
+
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace t10 {
 
-struct GlslEsBinding {
-    std::string name; // as declared in the translated source (an array: its name)
-    int value;
-};
-
-struct GlslEsSubroutineUniform {
-    int location;            // the subroutine uniform's layout(location = L)
-    std::string uniformName; // the `uniform int` declared for it: holds the chosen layout(index = N)
-};
-
 struct GlslEsShader {
-    std::string source;                              // GLSL ES 3.00, same line numbers as the input
-    std::vector<GlslEsBinding> samplerBindings;      // sampler uniform -> texture unit (arrays: one per element, "name[i]")
-    std::vector<GlslEsBinding> blockBindings;        // uniform block (its block name) -> binding point
-    std::vector<GlslEsBinding> uniformLocations;     // uniform -> explicit location (an array: its first location; element i at value + i)
-    std::vector<GlslEsSubroutineUniform> subroutineUniforms;
+    std::string source;   // GLSL ES 3.00, same line numbers as the input
+    ProgramLayout layout; // what the translation took out of the source, for the platform to set after linking
 };
-
-enum class GlslStage { Vertex, Fragment, Compute, Other };
 
 // The largest source accepted, in bytes (the course's largest shader is under 10 KiB).
 constexpr std::size_t kGlslEsMaxSourceBytes = 1u << 20;

@@ -54,37 +54,25 @@ public:
     // --capture-passes DIR installs the pass capture here.
     void setObserver(std::unique_ptr<FrameObserver> observer) { observer_ = std::move(observer); }
 
-    // Renders until the frame count is reached or the window closes; returns the exit code.
+    // Renders until the frame count is reached or the window closes; returns the exit code (the
+    // desktop's loop, app_native.cpp: in the browser the page's loop drives the App frame by frame).
     int run();
     // One frame of the stage into framebuffer 0: a requested rebuild, then GL_Render inside the
     // stage's pass timers (and inside the observer's hooks, if one is set). No input, UI, outputs or swap (the bench driver is handed exactly this).
     void renderFrame();
 
-#ifdef __EMSCRIPTEN__
-    // The browser build (app_web.cpp): run() hands the loop to the browser, which calls webFrame()
-    // once per animation frame; a frame is drawn only when something asked for one.
-    void webFrame();
-    // Module.t10Set(name, value): the command line `args` (the page's, plus every setting made
-    // since) parsed again with `--name value` appended; "" or the message the binary would print.
-    std::string webSet(const std::string& name, const std::string& value);
-    // Module.t10Options(): the stage's options as JSON (names, types, ranges, current values).
-    std::string webOptions() const;
-    void setWebArguments(std::vector<std::string> args) { webArgs_ = std::move(args); }
-#endif
-
 private:
-#ifdef __EMSCRIPTEN__
-    std::string applyWebSettings(const Settings& next); // webSet's second half: rebuild what changed
-#endif
+    friend class WebPage; // the browser's page loop (app_web.cpp), which reaches the services below
 
-private:
     void loadScene(bool buildRoom); // --scene (or the built-in scene) and --camera; the room's GL objects if buildRoom
+    void setUpWindow(); // the platform's part of a window's start-up (app_native.cpp: --input's size, the stage's UI)
     void resize(int width, int height);
     void buildStage();
     void quitStage();
     void followSize(int frame);
     void drawUi();
     void checkGlErrors(const std::string& when);
+    // run()'s helpers (app_native.cpp).
     void showFrameTimeInTitle();
     void printFrameTimes(const std::vector<double>& times) const;
     void runBenchmark();
@@ -107,12 +95,6 @@ private:
     std::unique_ptr<ViewService> views_;
     std::unique_ptr<ViewKeys> viewKeys_;
     std::unique_ptr<FrameObserver> observer_;
-#ifdef __EMSCRIPTEN__
-    std::vector<std::string> webArgs_; // argv[1..] as the page gave it, then each t10Set
-    int webPending_ = 0;               // frames still to draw before the page is "rendered"
-    int webDrawn_ = 0;                 // frames drawn so far (dataset.t10Frames)
-    double webLast_ = 0.0;             // the last webFrame()'s time, for the camera keys' speed
-#endif
 };
 
 // Runs a stage; returns the process exit code (0, 1 for runtime errors, 2 for bad usage).

@@ -5,7 +5,7 @@
 #include "t10/gl.hpp"
 #include "t10/image.hpp"
 
-#include <array>
+#include <memory>
 #include <optional>
 
 namespace t10 {
@@ -18,10 +18,12 @@ ImageF readTextureLevel(GLuint texture, int level, bool rgba = false);
 // The red channel of a 1x1 texture level (t10::Error for any other size), copied into a pixel buffer with a fence
 // after each request() and read by poll() once the GPU has got there: the value is a few frames
 // old, and no frame waits for it. GL objects are made on the first request(); destroy() deletes
-// them (call it while the context is current: the destructor does no GL).
+// them (call it while the context is current: the destructor does no GL). The browser build reads the
+// texel at once instead (texel_readback_web.cpp).
 class TexelReadback {
 public:
-    TexelReadback() = default;
+    TexelReadback();
+    ~TexelReadback();
     TexelReadback(const TexelReadback&) = delete;
     TexelReadback& operator=(const TexelReadback&) = delete;
 
@@ -31,18 +33,8 @@ public:
     void destroy();
 
 private:
-    static constexpr int kSlots = 4;
-    struct Slot {
-        GLuint buffer = 0;
-        GLsync fence = nullptr;
-        long serial = 0;
-    };
-    std::array<Slot, kSlots> slots_{};
-    int next_ = 0;
-    long serial_ = 0;
-#ifdef __EMSCRIPTEN__
-    std::optional<float> read_; // the browser build reads at once (WebGL 2 has no glGetTexImage)
-#endif
+    struct State; // the platform's, made by the first request(): texel_readback.cpp / texel_readback_web.cpp
+    std::unique_ptr<State> state_;
 };
 
 } // namespace t10

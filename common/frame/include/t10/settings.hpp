@@ -34,7 +34,7 @@ struct Settings {
 void addRunOptions(CLI::App& cli, RunSettings& settings, bool then);
 
 // Adds every service's group and the stage's own options (may be empty) to `cli`, bound to
-// `settings`: the command line's options, and the list a web page offers (App::webOptions).
+// `settings`: the command line's options, and the list a web page offers (WebPage::options, app_web.cpp).
 void addSettingsOptions(CLI::App& cli, Settings& settings, const AddOptionsHook& stageOptions = {});
 
 // Parses argv into `settings` with addSettingsOptions' options; returns as t10::parseCommandLine

@@ -1,7 +1,8 @@
-// The browser build's frame loop and the page's interface (compiled instead of App::run and
-// runStage in app.cpp). The browser owns the loop: App::run() builds the stage and registers
-// webFrame(), which draws a frame only when one is due (the frames the page asked for, a camera
-// move, a setting changed through Module.t10Set) and tells the page through document.body.dataset:
+// The browser build's frame loop and the page's interface (compiled instead of app_native.cpp,
+// common/CMakeLists.txt). The browser owns the loop: runStage() makes the page's WebPage, whose
+// start() builds the stage and registers frame(), which draws a frame only when one is due (the frames
+// the page asked for, a camera move, a setting changed through Module.t10Set) and tells the page
+// through document.body.dataset:
 // t10 = "loading" | "rendered" | "error" (the message in #t10-error), t10Frames = frames drawn.
 // The page (common/platform/web/index.html.in) turns its URL's query into argv.
 #include "t10/app.hpp"
@@ -26,9 +27,11 @@ EM_JS(void, t10PageError, (const char* message), { Module["t10ShowError"](UTF8To
 
 namespace t10 {
 
+class WebPage;
+
 namespace {
 
-App* g_app = nullptr;
+WebPage* g_page = nullptr;
 const Stage* g_stage = nullptr;
 
 // The options that read or write files, time the GPU or drive tests: a page has no files to give
@@ -73,17 +76,6 @@ int parseCaptured(const std::vector<std::string>& args, const Stage& stage, Sett
     return parsed;
 }
 
-void frameLoop(void*) {
-    try {
-        g_app->webFrame();
-    } catch (const std::exception& error) {
-        emscripten_cancel_main_loop();
-        const std::string message = std::string(g_stage->name) + ": error: " + error.what();
-        std::cerr << message << "\n";
-        t10PageError(message.c_str());
-    }
-}
-
 struct CameraState {
     glm::vec3 position;
     float yaw, pitch, fov;
@@ -98,94 +90,139 @@ CameraState cameraState(const Camera& camera) {
 
 } // namespace
 
-int App::run() {
-    resize(width_, height_);
-    webPending_ = settings_.run.frames > 0 ? settings_.run.frames : 1;
-    webLast_ = emscripten_get_now();
+// The page's App and what the browser's loop keeps between its calls (a friend of App: it drives the
+// services App::run drives on the desktop).
+class WebPage {
+public:
+    WebPage(const Stage& stage, const Settings& settings, Context& context, std::vector<std::string> args)
+        : app_(stage, settings, context), args_(std::move(args)) {}
+    // Builds the stage and hands frame() to the browser's loop.
+    void start();
+    // Called once per animation frame; draws a frame only when something asked for one.
+    void frame();
+    // Module.t10Set(name, value): the command line `args` (the page's, plus every setting made
+    // since) parsed again with `--name value` appended; "" or the message the binary would print.
+    std::string set(const std::string& name, const std::string& value);
+    // Module.t10Options(): the stage's options as JSON (names, types, ranges, current values).
+    std::string options() const;
+
+private:
+    std::string apply(const Settings& next); // set()'s second half: rebuild what changed
+
+    App app_;
+    std::vector<std::string> args_; // argv[1..] as the page gave it, then each t10Set
+    int pending_ = 0;               // frames still to draw before the page is "rendered"
+    int drawn_ = 0;                 // frames drawn so far (dataset.t10Frames)
+    double last_ = 0.0;             // the last frame()'s time, for the camera keys' speed
+};
+
+namespace {
+
+void frameLoop(void*) {
+    try {
+        g_page->frame();
+    } catch (const std::exception& error) {
+        emscripten_cancel_main_loop();
+        const std::string message = std::string(g_stage->name) + ": error: " + error.what();
+        std::cerr << message << "\n";
+        t10PageError(message.c_str());
+    }
+}
+
+} // namespace
+
+// The page has no --input (refused) and its controls stand for the UI: a window needs nothing more.
+void App::setUpWindow() {}
+
+void WebPage::start() {
+    app_.resize(app_.width_, app_.height_);
+    pending_ = app_.settings_.run.frames > 0 ? app_.settings_.run.frames : 1;
+    last_ = emscripten_get_now();
     t10PageState("loading", 0);
     emscripten_set_main_loop_arg(frameLoop, this, 0, 0);
-    return 0;
 }
 
-void App::webFrame() {
+void WebPage::frame() {
     const double now = emscripten_get_now();
-    const double elapsed = (now - webLast_) / 1000.0;
-    webLast_ = now;
-    const CameraState before = cameraState(camera_);
-    if (input_ != nullptr) input_->update(elapsed);
-    const View viewBefore = views_->current();
-    if (viewKeys_ != nullptr) viewKeys_->update(*views_);
-    if (cameraState(camera_) != before || views_->current() != viewBefore) webPending_ = std::max(webPending_, 1);
-    if (webPending_ == 0 || width_ == 0 || height_ == 0) return;
+    const double elapsed = (now - last_) / 1000.0;
+    last_ = now;
+    const CameraState before = cameraState(app_.camera_);
+    if (app_.input_ != nullptr) app_.input_->update(elapsed);
+    const View viewBefore = app_.views_->current();
+    if (app_.viewKeys_ != nullptr) app_.viewKeys_->update(*app_.views_);
+    if (cameraState(app_.camera_) != before || app_.views_->current() != viewBefore) pending_ = std::max(pending_, 1);
+    if (pending_ == 0 || app_.width_ == 0 || app_.height_ == 0) return;
     const double start = emscripten_get_now();
-    renderFrame();
-    views_->draw(*quad_, width_, height_);
-    frameTimeMs_ = emscripten_get_now() - start;
-    checkGlErrors("in frame " + std::to_string(webDrawn_));
-    ++webDrawn_;
-    --webPending_;
-    t10PageState(webPending_ == 0 ? "rendered" : "loading", webDrawn_);
+    app_.renderFrame();
+    app_.views_->draw(*app_.quad_, app_.width_, app_.height_);
+    app_.frameTimeMs_ = emscripten_get_now() - start;
+    app_.checkGlErrors("in frame " + std::to_string(drawn_));
+    ++drawn_;
+    --pending_;
+    t10PageState(pending_ == 0 ? "rendered" : "loading", drawn_);
 }
 
-std::string App::webSet(const std::string& name, const std::string& value) {
-    std::vector<std::string> args = webArgs_;
+std::string WebPage::set(const std::string& name, const std::string& value) {
+    const Stage& stage = app_.stage_;
+    std::vector<std::string> args = args_;
     args.push_back(value.empty() ? "--" + name : "--" + name + "=" + value);
     Settings next;
     std::string message;
-    const int parsed = parseCaptured(args, stage_, next, message);
+    const int parsed = parseCaptured(args, stage, next, message);
     if (parsed >= 0) {
         // Put back what the stage's own options held (a failed parse may have set some of them).
         Settings previous;
         std::string ignored;
-        parseCaptured(webArgs_, stage_, previous, ignored);
+        parseCaptured(args_, stage, previous, ignored);
         return message.empty() ? "--" + name + ": not applied" : message;
     }
     // A value the parser accepts may still be refused when applied (an unknown --camera): then
     // everything is put back as it was and the message returned; the page keeps its frame.
-    const std::vector<std::string> previousArgs = std::exchange(webArgs_, std::move(args));
-    const Settings previous = settings_;
+    const std::vector<std::string> previousArgs = std::exchange(args_, std::move(args));
+    const Settings previous = app_.settings_;
     try {
-        return applyWebSettings(next);
+        return apply(next);
     } catch (const UsageError& error) {
-        webArgs_ = previousArgs;
-        settings_ = previous;
+        args_ = previousArgs;
+        app_.settings_ = previous;
         Settings restored;
         std::string ignored;
-        parseCaptured(webArgs_, stage_, restored, ignored);
-        return std::string(stage_.name) + ": error: " + error.what();
+        parseCaptured(args_, stage, restored, ignored);
+        return std::string(stage.name) + ": error: " + error.what();
     }
 }
 
-std::string App::applyWebSettings(const Settings& next) {
-    const bool sizeChanged = next.context.width != settings_.context.width || next.context.height != settings_.context.height;
-    const bool cameraChanged = next.scene.camera != settings_.scene.camera;
-    const std::string viewBefore = settings_.views.view;
-    settings_ = next;
+std::string WebPage::apply(const Settings& next) {
+    Settings& settings = app_.settings_;
+    const bool sizeChanged = next.context.width != settings.context.width || next.context.height != settings.context.height;
+    const bool cameraChanged = next.scene.camera != settings.scene.camera;
+    const std::string viewBefore = settings.views.view;
+    settings = next;
     if (cameraChanged) {
-        loadScene(true);
-        scene_->resize(width_, height_);
+        app_.loadScene(true);
+        app_.scene_->resize(app_.width_, app_.height_);
     }
     if (sizeChanged) {
-        context_.requestSize(next.context.width, next.context.height);
-        resize(next.context.width, next.context.height);
+        app_.context_.requestSize(next.context.width, next.context.height);
+        app_.resize(next.context.width, next.context.height);
     } else {
-        requestRebuild(); // the stage's own settings (extras') are read again by GL_Init
+        app_.requestRebuild(); // the stage's own settings (extras') are read again by GL_Init
     }
-    if (settings_.views.view != viewBefore && !views_->select(*findView(settings_.views.view)))
-        return "--view " + settings_.views.view + ": this stage has no such view";
-    views_->showThumbnails(settings_.views.thumbnails);
-    webPending_ = std::max(webPending_, settings_.run.frames > 0 ? settings_.run.frames : 1);
-    t10PageState("loading", webDrawn_);
+    if (settings.views.view != viewBefore && !app_.views_->select(*findView(settings.views.view)))
+        return "--view " + settings.views.view + ": this stage has no such view";
+    app_.views_->showThumbnails(settings.views.thumbnails);
+    pending_ = std::max(pending_, settings.run.frames > 0 ? settings.run.frames : 1);
+    t10PageState("loading", drawn_);
     return "";
 }
 
-std::string App::webOptions() const {
+std::string WebPage::options() const {
     CLI::App cli;
     Settings scratch;
-    addSettingsOptions(cli, scratch, stage_.addOptions);
+    addSettingsOptions(cli, scratch, app_.stage_.addOptions);
     // The values given so far: the last of each name wins, as on the command line.
     std::map<std::string, std::string> given;
-    for (const std::string& arg : webArgs_) {
+    for (const std::string& arg : args_) {
         const std::size_t eq = arg.find('=');
         if (arg.rfind("--", 0) == 0) given[arg.substr(2, eq == std::string::npos ? std::string::npos : eq - 2)] =
             eq == std::string::npos ? "" : arg.substr(eq + 1);
@@ -211,9 +248,9 @@ std::string App::webOptions() const {
         for (const CLI::Option* option : group->get_options()) describe(option, group->get_group());
     }
     nlohmann::json views = nlohmann::json::array();
-    for (View view : views_->availableViews()) views.push_back(viewName(view));
-    return nlohmann::json{{"stage", stage_.name}, {"options", options}, {"views", views},
-                          {"view", viewName(views_->current())}}
+    for (View view : app_.views_->availableViews()) views.push_back(viewName(view));
+    return nlohmann::json{{"stage", app_.stage_.name}, {"options", options}, {"views", views},
+                          {"view", viewName(app_.views_->current())}}
         .dump();
 }
 
@@ -235,9 +272,9 @@ int runStage(int argc, const char* const* argv, const Stage& stageInMain) {
         contextOptions.title = stage.name;
         // Kept for the page's lifetime: the browser calls the loop after main() returns.
         Context* context = Context::create(contextOptions).release();
-        g_app = new App(stage, *settings, *context);
-        g_app->setWebArguments(std::move(args));
-        return g_app->run();
+        g_page = new WebPage(stage, *settings, *context, std::move(args));
+        g_page->start();
+        return 0;
     } catch (const std::exception& error) {
         message = std::string(stage.name) + ": error: " + error.what();
         std::cerr << message << "\n";
@@ -254,9 +291,9 @@ extern "C" {
 
 EMSCRIPTEN_KEEPALIVE const char* t10_set(const char* name, const char* value) {
     static std::string result;
-    if (t10::g_app == nullptr) return "the stage is not running";
+    if (t10::g_page == nullptr) return "the stage is not running";
     try {
-        result = t10::g_app->webSet(name, value);
+        result = t10::g_page->set(name, value);
     } catch (const std::exception& error) {
         result = std::string(t10::g_stage->name) + ": error: " + error.what();
         t10PageError(result.c_str());
@@ -266,7 +303,7 @@ EMSCRIPTEN_KEEPALIVE const char* t10_set(const char* name, const char* value) {
 
 EMSCRIPTEN_KEEPALIVE const char* t10_options() {
     static std::string result;
-    result = t10::g_app != nullptr ? t10::g_app->webOptions() : "{}";
+    result = t10::g_page != nullptr ? t10::g_page->options() : "{}";
     return result.c_str();
 }
 

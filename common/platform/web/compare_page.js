@@ -2,7 +2,7 @@
 // with --post-js (cmake/T10Student.cmake), so it runs inside the module's scope. Once the student's
 // frame is rendered it loads the reference part's page (../<reference>/index.html) with the same
 // settings in a frame beside it, reads both canvases and judges them with the golden test's own code
-// and tolerance (t10_compare_rgba, common/base/src/compare_export.cpp, compiled into this module), then
+// and tolerance (t10_compare_rgba, compare_export.cpp beside this file, compiled into this module), then
 // shows both frames, the difference heat-map, the verdict and the tolerance, and sets
 // document.body.dataset.t10Verdict to "pass" or "fail". The metric is not repeated here.
 // t10CompareReference (the reference stage's folder) is set by a --pre-js that CMake writes.

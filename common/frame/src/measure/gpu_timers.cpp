@@ -1,21 +1,11 @@
-// The ring of GL_TIME_ELAPSED query sets; see gpu_timers.hpp.
+// The ring of GL_TIME_ELAPSED query sets; see gpu_timers.hpp. The browser build compiles
+// gpu_timers_web.cpp instead (common/CMakeLists.txt).
 #include "t10/gpu_timers.hpp"
 
 #include <algorithm>
 
 namespace t10 {
 
-#ifdef __EMSCRIPTEN__
-// The browser build: WebGL 2 has no GL_TIME_ELAPSED queries in its core, so the passes are not timed
-// (latest() stays empty; --bench is refused by the page).
-void PassTimers::create() {}
-void PassTimers::destroy() {}
-void PassTimers::beginFrame() {}
-void PassTimers::begin(const std::string&) {}
-void PassTimers::end() {}
-void PassTimers::endFrame() {}
-bool PassTimers::collect(bool) { return false; }
-#else
 void PassTimers::create() {
     if (created_) return;
     for (Frame& frame : frames_) {
@@ -111,7 +101,5 @@ bool PassTimers::collect(bool wait) {
     for (Frame* frame : order) changed = readFrame(*frame, wait) || changed;
     return changed;
 }
-
-#endif
 
 } // namespace t10

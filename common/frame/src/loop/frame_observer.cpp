@@ -1,4 +1,5 @@
-// The capture hook's draw observation and the pass capture of --capture-passes; see frame_observer.hpp.
+// The pass capture of --capture-passes; see frame_observer.hpp. The draw observation is the
+// platform's: draw_observation.cpp (the loader's entry points), draw_observation_web.cpp.
 #include "t10/frame_observer.hpp"
 
 #include "t10/error.hpp"
@@ -16,33 +17,6 @@
 namespace t10 {
 
 namespace {
-
-#ifndef __EMSCRIPTEN__ // the browser build has no loader whose entry points could be swapped
-// The loader's entry points while a DrawObservation is alive, and whom to tell. GL entry points are
-// plain function pointers that carry no context, so this is the one per-process slot they can reach.
-struct ObservedDraws {
-    FrameObserver* observer = nullptr;
-    PFNGLDRAWELEMENTSPROC drawElements = nullptr;
-    PFNGLDRAWARRAYSPROC drawArrays = nullptr;
-};
-
-ObservedDraws& observedDraws() {
-    static ObservedDraws slot;
-    return slot;
-}
-
-void GLAD_API_PTR observedDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
-    ObservedDraws& slot = observedDraws();
-    slot.drawElements(mode, count, type, indices);
-    slot.observer->afterDraw();
-}
-
-void GLAD_API_PTR observedDrawArrays(GLenum mode, GLint first, GLsizei count) {
-    ObservedDraws& slot = observedDraws();
-    slot.drawArrays(mode, first, count);
-    slot.observer->afterDraw();
-}
-#endif
 
 class PassCapture final : public FrameObserver {
 public:
@@ -104,30 +78,6 @@ private:
 };
 
 } // namespace
-
-#ifdef __EMSCRIPTEN__
-DrawObservation::DrawObservation(FrameObserver&) {
-    throw Error("--capture-passes is not available in the web build (WebGL 2's calls cannot be observed)");
-}
-DrawObservation::~DrawObservation() = default;
-#else
-DrawObservation::DrawObservation(FrameObserver& observer) {
-    ObservedDraws& slot = observedDraws();
-    if (slot.observer != nullptr) throw Error("a draw observation is already installed (one at a time)");
-    slot.observer = &observer;
-    slot.drawElements = glad_glDrawElements;
-    slot.drawArrays = glad_glDrawArrays;
-    glad_glDrawElements = &observedDrawElements;
-    glad_glDrawArrays = &observedDrawArrays;
-}
-
-DrawObservation::~DrawObservation() {
-    ObservedDraws& slot = observedDraws();
-    glad_glDrawElements = slot.drawElements;
-    glad_glDrawArrays = slot.drawArrays;
-    slot = ObservedDraws{};
-}
-#endif
 
 std::unique_ptr<FrameObserver> makePassCapture(const std::string& dir) { return std::make_unique<PassCapture>(dir); }
 

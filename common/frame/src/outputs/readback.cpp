@@ -1,0 +1,40 @@
+// GPU-to-CPU reads at once; see readback.hpp. TexelReadback is the platform's: texel_readback.cpp
+// (a pixel buffer and a fence), texel_readback_web.cpp.
+#include "t10/readback.hpp"
+
+#include "texture_on_unit0.hpp"
+
+namespace t10 {
+
+Image8 readDefaultFramebuffer(int width, int height) {
+    Image8 image(width, height, 3);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    // The buffer drawn into (the back buffer of a window): DRAW_BUFFER0 is what desktop GL calls
+    // DRAW_BUFFER, and the one name WebGL 2 knows (its default framebuffer has only GL_BACK).
+    GLint drawBuffer = GL_BACK;
+    glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
+    glReadBuffer(static_cast<GLenum>(drawBuffer));
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.data.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    return image;
+}
+
+ImageF readTextureLevel(GLuint texture, int level, bool rgba) {
+    const TextureOnUnit0 bound(texture);
+    GLint width = 0;
+    GLint height = 0;
+    GLint format = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    const bool single = format == GL_R16 || format == GL_R16F || format == GL_R32F || format == GL_R8;
+    const int channels = rgba ? 4 : (single ? 1 : 3);
+    ImageF image(width, height, channels);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_2D, level, channels == 4 ? GL_RGBA : (channels == 1 ? GL_RED : GL_RGB), GL_FLOAT,
+                  image.data.data());
+    return image;
+}
+
+} // namespace t10
