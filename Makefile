@@ -42,6 +42,7 @@ help:
 	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one; WEB_PRESET=web-release: -O3)"
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
+	@echo "make site-deps  install the site tests' npm tools (axe-core, pinned) into $(BUILD)/site-axe/"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
@@ -118,7 +119,7 @@ run: build
 # do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's
 # small renders spend more CPU compiling shaders than drawing them (the vectors: ctest 163 s, not 168).
 test: PACKAGES += catch2 python3-venv
-test: deps
+test: deps site-deps
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
 	if [ -n "$$missing" ]; then \
 	    [ -z "$(SUDO)" ] || $(SUDO) true || exit 1; \
@@ -204,6 +205,17 @@ site: configure
 # web stages: every stage's embed renders, the exercises' controls change the frame and back, without
 # WebGL the pictures stay; screenshots in $(BUILD)/site-tests/live/. About two minutes on two cores, so
 # not in make test; CI runs it after make web. Without $(OUT)/web it says SKIPPED and fails.
+# The site's tools that Debian lacks, pinned from the npm registry into $(BUILD)/ (npm ci: the versions and
+# integrity hashes of the lock file): axe-core (site/tests/axe/) for the accessibility test of make test.
+# npm is Debian's package where no npm is on PATH (NodeSource's nodejs carries its own).
+SITE_AXE := $(BUILD)/site-axe
+.PHONY: site-deps
+site-deps:
+	@command -v npm >/dev/null || $(MAKE) --no-print-directory deps PACKAGES=npm
+	@cmp -s site/tests/axe/package-lock.json $(SITE_AXE)/package-lock.json && [ -f $(SITE_AXE)/node_modules/axe-core/axe.min.js ] || { \
+	    rm -rf $(SITE_AXE) && mkdir -p $(SITE_AXE) && cp site/tests/axe/package.json site/tests/axe/package-lock.json $(SITE_AXE)/ && \
+	    npm ci --prefix $(SITE_AXE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "axe-core installed into $(SITE_AXE)"; }
+
 .PHONY: site-live
 site-live: site
 	cmake --build $(BUILD) --target site-live

@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Every page of the built site checked by axe-core (WCAG 2.0 and 2.1, levels A and AA) in headless Chromium.
+
+Each page (every .html of the site but the web stages' own pages under web/) is loaded from 127.0.0.1 at
+each --width (800: the one-column layout; 1280: the sidebar beside the text) in the light and the dark
+scheme (the reader's system preference, emulated, so the page's own start-up picks it), and axe-core
+(pinned in site/tests/axe/package-lock.json; make installs it into build/site-axe/) runs its rules
+tagged wcag2a, wcag2aa, wcag21a and wcag21aa. The tutorial page is also checked with every live embed
+running (WebGL2 on SwiftShader), axe injected into each embed's page too, at each width and scheme.
+
+Passing means 0 violations, and no text whose contrast axe could not decide because of a pseudo-
+element's background (the 1280-px sidebar once drew its colour with .layout::before, so axe skipped
+the contrast of every word in it: that is reported as a violation here, not let through).
+
+It can fail: on the site as it was before issue 50 (commit 2cee4be, with its five embeds) it reports
+931 violating nodes over its 32 runs (colour contrast 719, scrollable regions a keyboard cannot reach
+196, the theme toggle's name not containing its visible text 16) and 19502 texts whose contrast axe
+could not decide for a pseudo-element's background (the sidebar's and the step numbers' circles).
+
+--need-embeds: fail when the site has no web stage to embed (make web ran, so it must).
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
+import cdp  # noqa: E402  (the DevTools client)
+from cdp import Failure, evaluate  # noqa: E402
+
+TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+
+# axe in the page and in every live embed's page (same origin), then the run; returns the violations
+# and the contrast checks axe left undecided because of a pseudo-element, as JSON.
+RUN_AXE = r"""
+(async (tags) => {
+  for (const frame of document.querySelectorAll('iframe')) {
+    const doc = frame.contentDocument;
+    if (!doc || !doc.head || frame.contentWindow.axe) continue;
+    const script = doc.createElement('script');
+    script.textContent = window.__axeSource;
+    doc.head.appendChild(script);
+  }
+  const result = await axe.run(document, {runOnly: {type: 'tag', values: tags}, resultTypes: ['violations', 'incomplete'],
+                                          iframes: true, frameWaitTime: 20000});
+  const brief = (rule) => ({id: rule.id, impact: rule.impact, help: rule.help,
+      nodes: rule.nodes.map(n => ({target: n.target.join(' > '), summary: (n.failureSummary || '').split('\n').slice(0, 3).join(' '),
+                                   html: n.html.slice(0, 160)}))});
+  const pseudo = result.incomplete.filter(r => r.id === 'color-contrast').map(rule => Object.assign(brief(rule), {
+      nodes: brief(rule).nodes.filter((n, i) => /pseudo/i.test(JSON.stringify(rule.nodes[i].any.map(a => a.data))))}))
+      .filter(r => r.nodes.length);
+  return JSON.stringify({violations: result.violations.map(brief), pseudo: pseudo});
+})
+"""
+
+STATE = r"""
+JSON.stringify([...document.querySelectorAll('.live[data-src]')].map(l => ({stage: l.dataset.stage, state: l.dataset.state,
+  note: (l.querySelector('.live-note') || {}).textContent || ''})))
+"""
+
+
+def pages_of(site):
+    found = []
+    for root, dirs, files in os.walk(site):
+        rel = os.path.relpath(root, site)
+        if rel.split(os.sep)[0] in ("web", "assets"):
+            dirs[:] = []
+            continue
+        found += [os.path.normpath(os.path.join(rel, f)) for f in files if f.endswith(".html")]
+    return sorted(found)
+
+
+def load(browser, session, url, scheme, width):
+    browser.send("Emulation.setEmulatedMedia", {"features": [{"name": "prefers-color-scheme", "value": scheme}]}, session)
+    browser.send("Emulation.setDeviceMetricsOverride", {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+    browser.send("Page.navigate", {"url": url}, session)
+    browser.wait_event("Page.loadEventFired", session, timeout=60)
+    cdp.wait_until(lambda: evaluate(browser, session, "document.documentElement.dataset.math || ''"),
+                   lambda v: v != "", 20, "the page's script did not run (data-math unset)")
+
+
+def run_axe(browser, session):
+    if not evaluate(browser, session, "typeof axe !== 'undefined'"):
+        evaluate(browser, session, "(() => { const s = document.createElement('script'); s.textContent = window.__axeSource;"
+                                   " document.head.appendChild(s); return typeof axe; })()")
+    return json.loads(evaluate(browser, session, f"{RUN_AXE}({json.dumps(TAGS)})", await_promise=True, timeout=180))
+
+
+def report(where, result, out_lines):
+    """Adds a line per violating rule to out_lines; returns the number of violating nodes."""
+    count = 0
+    for rule in result["violations"] + [dict(r, id="color-contrast undecided: a pseudo-element's background")
+                                        for r in result["pseudo"]]:
+        count += len(rule["nodes"])
+        first = rule["nodes"][0] if rule["nodes"] else {}
+        out_lines.append(f"{where}: {rule['id']} ({rule.get('impact')}), {len(rule['nodes'])} node(s): {rule['help']}; "
+                         f"first: {first.get('target')} {first.get('html', '')!r} {first.get('summary', '')}")
+    return count
+
+
+def set_axe_source(browser, session, source):
+    browser.send("Page.addScriptToEvaluateOnNewDocument", {"source": "window.__axeSource = " + json.dumps(source) + ";"}, session)
+
+
+def start_embeds(browser, session, timeout):
+    stages = [s["stage"] for s in json.loads(evaluate(browser, session, STATE))]
+    for stage in stages:  # one after the other, as a reader clicks them (two cores)
+        evaluate(browser, session, f"t10Live.start({json.dumps(stage)})")
+        cdp.wait_until(lambda: json.loads(evaluate(browser, session, STATE)),
+                       lambda c: all(s["state"] != "loading" for s in c if s["stage"] == stage), timeout,
+                       f"{stage}: the embed did not finish loading", lambda c: f": {c}", interval=0.2)
+    current = json.loads(evaluate(browser, session, STATE))
+    broken = [f"{s['stage']}: {s['state']} {s['note']}" for s in current if s["state"] != "rendered"]
+    if broken:
+        raise Failure("embeds that did not run: " + "; ".join(broken))
+    return stages
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--site", required=True, help="the built site")
+    ap.add_argument("--axe", required=True, help="axe.min.js (build/site-axe/node_modules/axe-core/axe.min.js)")
+    ap.add_argument("--chromium", default="chromium")
+    ap.add_argument("--out", required=True, help="folder for Chromium's log and the report")
+    ap.add_argument("--widths", default="800,1280")
+    ap.add_argument("--tutorial", default="tutorial10.html", help="the page whose embeds run")
+    ap.add_argument("--need-embeds", action="store_true", help="fail when the site has no web stage to embed")
+    ap.add_argument("--timeout", type=float, default=400)
+    args = ap.parse_args()
+    if not os.path.isfile(args.axe):
+        raise Failure(f"{args.axe} does not exist: make installs axe-core there (npm ci, site/tests/axe/package-lock.json); "
+                      f"run make test, or make site-deps")
+    with open(args.axe, encoding="utf-8") as f:
+        source = f.read()
+    widths = [int(w) for w in args.widths.split(",")]
+    pages = pages_of(args.site)
+    if args.tutorial not in pages:
+        raise Failure(f"{args.site}/{args.tutorial} does not exist: build the site first (make site)")
+    embeds = os.path.isdir(os.path.join(args.site, "web"))
+    if args.need_embeds and not embeds:
+        raise Failure(f"{args.site}/web/ does not exist: the site was built without the web stages, so its embeds are untested")
+    os.makedirs(args.out, exist_ok=True)
+    started = time.monotonic()
+    lines, total, runs = [], 0, 0
+    with cdp.browsing(args.site, args.chromium, os.path.join(args.out, "chromium.log"), started + args.timeout,
+                      gpu_args=cdp.RENDERERS["swiftshader"]) as (browser, base):
+        _, session = cdp.open_tab(browser)
+        set_axe_source(browser, session, source)
+        for page in pages:
+            for width in widths:
+                for scheme in ("light", "dark"):
+                    load(browser, session, base + page, scheme, width)
+                    total += report(f"{page} at {width} px, {scheme}", run_axe(browser, session), lines)
+                    runs += 1
+        if embeds:
+            # The tutorial with every embed running, started once at the widest width, then each width
+            # and scheme (the scheme set as its toggle button sets it).
+            load(browser, session, base + args.tutorial, "light", max(widths))
+            stages = start_embeds(browser, session, 120)
+            for width in sorted(widths, reverse=True):
+                browser.send("Emulation.setDeviceMetricsOverride",
+                             {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+                for scheme in ("light", "dark"):
+                    evaluate(browser, session, f"document.documentElement.setAttribute('data-theme', '{scheme}')")
+                    total += report(f"{args.tutorial} with {len(stages)} embeds running at {width} px, {scheme}",
+                                    run_axe(browser, session), lines)
+                    runs += 1
+    elapsed = time.monotonic() - started
+    with open(os.path.join(args.out, "axe-report.txt"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print(f"axe-core: {runs} runs over {len(pages)} pages ({', '.join(pages)}) at {args.widths} px, light and dark"
+          f"{', the tutorial with its embeds running' if embeds else ''}: {total} violating node(s) in {elapsed:.1f} s")
+    if total:
+        raise Failure(f"{total} violating node(s) (WCAG 2.0/2.1 A and AA, axe-core):\n  " + "\n  ".join(lines))
+    return 0
+
+
+if __name__ == "__main__":
+    cdp.run_main(main)
