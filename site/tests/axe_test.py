@@ -2,11 +2,11 @@
 """Every page of the built site checked by axe-core (WCAG 2.0 and 2.1, levels A and AA) in headless Chromium.
 
 Each page (every .html of the site but the web stages' own pages under web/) is loaded from 127.0.0.1 at
-each --width (800: the one-column layout; 1280: the sidebar beside the text) in the light and the dark
-scheme (the reader's system preference, emulated, so the page's own start-up picks it), and axe-core
-(pinned in site/tests/axe/package-lock.json; make installs it into build/site-axe/) runs its rules
-tagged wcag2a, wcag2aa, wcag21a and wcag21aa. The tutorial page is also checked with every live embed
-running (WebGL2 on SwiftShader), axe injected into each embed's page too, at each width and scheme.
+each --width (800: the one-column layout; 1280: the sidebar beside the text), in the light and then the
+dark scheme (set as the sidebar's button sets it), and axe-core (pinned in site/tests/axe/package-lock.json;
+make installs it into build/site-axe/) runs its rules tagged wcag2a, wcag2aa, wcag21a and wcag21aa. The
+tutorial page is checked with every live embed running (WebGL2 on SwiftShader; without web stages, as it
+is), axe injected into each embed's page too, at each width and scheme.
 
 Passing means 0 violations, and no text whose contrast axe could not decide because of a pseudo-
 element's background (the 1280-px sidebar once drew its colour with .layout::before, so axe skipped
@@ -73,8 +73,7 @@ def pages_of(site):
     return sorted(found)
 
 
-def load(browser, session, url, scheme, width):
-    browser.send("Emulation.setEmulatedMedia", {"features": [{"name": "prefers-color-scheme", "value": scheme}]}, session)
+def load(browser, session, url, width):
     browser.send("Emulation.setDeviceMetricsOverride", {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
     browser.send("Page.navigate", {"url": url}, session)
     browser.wait_event("Page.loadEventFired", session, timeout=60)
@@ -82,15 +81,25 @@ def load(browser, session, url, scheme, width):
                    lambda v: v != "", 20, "the page's script did not run (data-math unset)")
 
 
+def set_scheme(browser, session, scheme):
+    evaluate(browser, session, f"document.documentElement.setAttribute('data-theme', '{scheme}')")
+
+
 def run_axe(browser, session):
+    started = time.monotonic()
     if not evaluate(browser, session, "typeof axe !== 'undefined'"):
         evaluate(browser, session, "(() => { const s = document.createElement('script'); s.textContent = window.__axeSource;"
                                    " document.head.appendChild(s); return typeof axe; })()")
-    return json.loads(evaluate(browser, session, f"{RUN_AXE}({json.dumps(TAGS)})", await_promise=True, timeout=180))
+    result = json.loads(evaluate(browser, session, f"{RUN_AXE}({json.dumps(TAGS)})", await_promise=True, timeout=180))
+    result["seconds"] = time.monotonic() - started
+    return result
 
 
-def report(where, result, out_lines):
-    """Adds a line per violating rule to out_lines; returns the number of violating nodes."""
+def report(where, result, out_lines, details):
+    """Adds a line per violating rule to out_lines (and every node to details); returns the number of
+    violating nodes."""
+    details[where] = result
+    print(f"{where}: {result['seconds']:.1f} s", flush=True)
     count = 0
     for rule in result["violations"] + [dict(r, id="color-contrast undecided: a pseudo-element's background")
                                         for r in result["pseudo"]]:
@@ -144,33 +153,41 @@ def main():
         raise Failure(f"{args.site}/web/ does not exist: the site was built without the web stages, so its embeds are untested")
     os.makedirs(args.out, exist_ok=True)
     started = time.monotonic()
-    lines, total, runs = [], 0, 0
+    lines, total, runs, details = [], 0, 0, {}
     with cdp.browsing(args.site, args.chromium, os.path.join(args.out, "chromium.log"), started + args.timeout,
                       gpu_args=cdp.RENDERERS["swiftshader"]) as (browser, base):
         _, session = cdp.open_tab(browser)
         set_axe_source(browser, session, source)
         for page in pages:
+            if embeds and page == args.tutorial:
+                continue  # checked below, with its embeds running
             for width in widths:
+                # Loaded in the light scheme, then switched as its toggle button does (a reload for the
+                # dark one would cost a second a page and check nothing more).
+                load(browser, session, base + page, width)
                 for scheme in ("light", "dark"):
-                    load(browser, session, base + page, scheme, width)
-                    total += report(f"{page} at {width} px, {scheme}", run_axe(browser, session), lines)
+                    set_scheme(browser, session, scheme)
+                    total += report(f"{page} at {width} px, {scheme}", run_axe(browser, session), lines, details)
                     runs += 1
         if embeds:
             # The tutorial with every embed running, started once at the widest width, then each width
             # and scheme (the scheme set as its toggle button sets it).
-            load(browser, session, base + args.tutorial, "light", max(widths))
+            load(browser, session, base + args.tutorial, max(widths))
             stages = start_embeds(browser, session, 120)
             for width in sorted(widths, reverse=True):
                 browser.send("Emulation.setDeviceMetricsOverride",
                              {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+                time.sleep(0.3)  # the resize event, on which site.js marks the blocks that now scroll
                 for scheme in ("light", "dark"):
-                    evaluate(browser, session, f"document.documentElement.setAttribute('data-theme', '{scheme}')")
+                    set_scheme(browser, session, scheme)
                     total += report(f"{args.tutorial} with {len(stages)} embeds running at {width} px, {scheme}",
-                                    run_axe(browser, session), lines)
+                                    run_axe(browser, session), lines, details)
                     runs += 1
     elapsed = time.monotonic() - started
     with open(os.path.join(args.out, "axe-report.txt"), "w") as f:
         f.write("\n".join(lines) + "\n")
+    with open(os.path.join(args.out, "axe-nodes.json"), "w") as f:
+        json.dump(details, f, indent=1)
     print(f"axe-core: {runs} runs over {len(pages)} pages ({', '.join(pages)}) at {args.widths} px, light and dark"
           f"{', the tutorial with its embeds running' if embeds else ''}: {total} violating node(s) in {elapsed:.1f} s")
     if total:

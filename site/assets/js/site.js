@@ -38,9 +38,65 @@
     });
   }
 
+  // What a scrolling region holds, for its name: the excerpt's caption (file and step), a table's
+  // heading, or what it is.
+  function regionName(element) {
+    var figure = element.closest("figure.excerpt");
+    var caption = figure && figure.querySelector("figcaption");
+    if (caption) return "Code: " + caption.textContent.replace(/\s+/g, " ").trim();
+    if (element.classList.contains("table-scroll")) {
+      var heading = element.previousElementSibling;
+      while (heading && !/^H[1-6]$/.test(heading.tagName)) heading = heading.previousElementSibling;
+      return "Table" + (heading ? ": " + heading.textContent.trim() : "");
+    }
+    if (element.classList.contains("diff")) {
+      var title = element.previousElementSibling;
+      return "Diff" + (title && /^H[1-6]$/.test(title.tagName) ? ": " + title.textContent.trim() : "");
+    }
+    if (element.classList.contains("katex-display")) return "Formula";
+    var language = /language-([\w+-]+)/.exec(element.closest("[class*=language-]") ? element.closest("[class*=language-]").className : "");
+    return "Code" + (language && language[1] !== "plaintext" ? " (" + language[1] + ")" : "");
+  }
+
+  // A block that scrolls sideways at the current width (code, a wide table, a diff, a long formula)
+  // is reachable from the keyboard and named (WCAG 2.1.1); one that fits is no extra Tab stop.
+  function markScrollables() {
+    var candidates = document.querySelectorAll(".content pre, .content .table-scroll, .content .diff, .content .katex-display");
+    var wide = Array.prototype.map.call(candidates, function (element) {
+      return element.scrollWidth > element.clientWidth + 1 && getComputedStyle(element).overflowX !== "visible";
+    });
+    Array.prototype.forEach.call(candidates, function (element, i) {
+      if (wide[i]) {
+        element.setAttribute("tabindex", "0");
+        element.setAttribute("role", "region");
+        element.setAttribute("aria-label", regionName(element) + ", scrolls sideways");
+      } else if (element.hasAttribute("data-scroll-marked")) {
+        element.removeAttribute("tabindex");
+        element.removeAttribute("role");
+        element.removeAttribute("aria-label");
+      }
+      if (wide[i]) element.setAttribute("data-scroll-marked", "");
+    });
+  }
+
+  // Tables scroll in a wrapper, so that the table itself stays a table to assistive technology.
+  function wrapTables() {
+    Array.prototype.forEach.call(document.querySelectorAll(".content table"), function (table) {
+      if (table.parentNode.classList.contains("table-scroll")) return;
+      var wrapper = document.createElement("div");
+      wrapper.className = "table-scroll";
+      table.parentNode.insertBefore(wrapper, table);
+      wrapper.appendChild(table);
+    });
+  }
+
   function start() {
     setupToggle();
+    wrapTables();
     renderMath();
+    markScrollables();
+    window.addEventListener("resize", markScrollables);
+    root.setAttribute("data-scrollables", "marked");
   }
 
   if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
