@@ -4,20 +4,18 @@
 Each page (every .html of the site but the web stages' own pages under web/) is loaded from 127.0.0.1 at
 each --width (800: the one-column layout; 1280: the sidebar beside the text), in the light and then the
 dark scheme (set as the sidebar's button sets it), and axe-core (pinned in site/tests/axe/package-lock.json;
-make installs it into build/site-axe/) runs its rules tagged wcag2a, wcag2aa, wcag21a and wcag21aa. The
-tutorial page is checked with every live embed running (WebGL2 on SwiftShader; without web stages, as it
-is), axe injected into each embed's page too, at each width and scheme.
+make installs it into build/site-axe/) runs its rules tagged wcag2a, wcag2aa, wcag21a and wcag21aa, in
+the page and in every frame it holds. The tutorial page with every live embed running is checked the
+same way by keyboard_test.py --axe (which has them running already), or here with --with-embeds.
 
 Passing means 0 violations, and no text whose contrast axe could not decide because of a pseudo-
 element's background (the 1280-px sidebar once drew its colour with .layout::before, so axe skipped
 the contrast of every word in it: that is reported as a violation here, not let through).
 
-It can fail: on the site as it was before issue 50 (commit 2cee4be, with its five embeds) it reports
-931 violating nodes over its 32 runs (colour contrast 719, scrollable regions a keyboard cannot reach
-196, the theme toggle's name not containing its visible text 16) and 19502 texts whose contrast axe
-could not decide for a pseudo-element's background (the sidebar's and the step numbers' circles).
-
---need-embeds: fail when the site has no web stage to embed (make web ran, so it must).
+It can fail: on the site as it was before issue 50 (commit 2cee4be, with its five embeds running) it
+reports 931 violating nodes over 32 runs (colour contrast 719, scrollable regions a keyboard cannot
+reach 196, the theme toggle's name not containing its visible text 16) and 19502 texts whose contrast
+axe could not decide for a pseudo-element's background (the sidebar's and the step numbers' circles).
 """
 
 import argparse
@@ -95,28 +93,62 @@ def run_axe(browser, session):
     return result
 
 
-def report(where, result, out_lines, details):
-    """Adds a line per violating rule to out_lines (and every node to details); returns the number of
-    violating nodes."""
-    details[where] = result
-    print(f"{where}: {result['seconds']:.1f} s", flush=True)
-    count = 0
-    for rule in result["violations"] + [dict(r, id="color-contrast undecided: a pseudo-element's background")
-                                        for r in result["pseudo"]]:
-        count += len(rule["nodes"])
-        first = rule["nodes"][0] if rule["nodes"] else {}
-        out_lines.append(f"{where}: {rule['id']} ({rule.get('impact')}), {len(rule['nodes'])} node(s): {rule['help']}; "
-                         f"first: {first.get('target')} {first.get('html', '')!r} {first.get('summary', '')}")
-    return count
+class Findings:
+    """What the axe runs found: a line per violating rule, every node (for axe-nodes.json), the count."""
+
+    def __init__(self):
+        self.lines, self.details, self.total, self.runs = [], {}, 0, 0
+
+    def add(self, where, result):
+        self.details[where] = result
+        self.runs += 1
+        print(f"{where}: {result['seconds']:.1f} s", flush=True)
+        for rule in result["violations"] + [dict(r, id="color-contrast undecided: a pseudo-element's background")
+                                            for r in result["pseudo"]]:
+            self.total += len(rule["nodes"])
+            first = rule["nodes"][0] if rule["nodes"] else {}
+            self.lines.append(f"{where}: {rule['id']} ({rule.get('impact')}), {len(rule['nodes'])} node(s): {rule['help']}; "
+                              f"first: {first.get('target')} {first.get('html', '')!r} {first.get('summary', '')}")
+
+    def write(self, out, name):
+        with open(os.path.join(out, f"{name}-report.txt"), "w") as f:
+            f.write("\n".join(self.lines) + "\n")
+        with open(os.path.join(out, f"{name}-nodes.json"), "w") as f:
+            json.dump(self.details, f, indent=1)
+
+    def failure(self):
+        return Failure(f"{self.total} violating node(s) (WCAG 2.0/2.1 A and AA, axe-core):\n  " + "\n  ".join(self.lines))
 
 
 def set_axe_source(browser, session, source):
+    """axe's source, kept in every page the tab loads (run_axe injects it into the page and its frames)."""
     browser.send("Page.addScriptToEvaluateOnNewDocument", {"source": "window.__axeSource = " + json.dumps(source) + ";"}, session)
 
 
+def read_axe(path):
+    if not os.path.isfile(path):
+        raise Failure(f"{path} does not exist: make installs axe-core there (npm ci, site/tests/axe/package-lock.json); "
+                      f"run make test, or make site-deps")
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def check_loaded(browser, session, widths, label, findings):
+    """axe on the page as it is now, at each width (widest first) and in both schemes."""
+    for width in sorted(widths, reverse=True):
+        browser.send("Emulation.setDeviceMetricsOverride",
+                     {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
+        time.sleep(0.3)  # the resize event, on which site.js marks the blocks that now scroll
+        for scheme in ("light", "dark"):
+            set_scheme(browser, session, scheme)
+            findings.add(f"{label} at {width} px, {scheme}", run_axe(browser, session))
+
+
 def start_embeds(browser, session, timeout):
+    """Starts every embed of the page, one after the other as a reader clicks them (two cores); returns
+    their stages once all are running."""
     stages = [s["stage"] for s in json.loads(evaluate(browser, session, STATE))]
-    for stage in stages:  # one after the other, as a reader clicks them (two cores)
+    for stage in stages:
         evaluate(browser, session, f"t10Live.start({json.dumps(stage)})")
         cdp.wait_until(lambda: json.loads(evaluate(browser, session, STATE)),
                        lambda c: all(s["state"] != "loading" for s in c if s["stage"] == stage), timeout,
@@ -136,62 +168,38 @@ def main():
     ap.add_argument("--out", required=True, help="folder for Chromium's log and the report")
     ap.add_argument("--widths", default="800,1280")
     ap.add_argument("--tutorial", default="tutorial10.html", help="the page whose embeds run")
-    ap.add_argument("--need-embeds", action="store_true", help="fail when the site has no web stage to embed")
+    ap.add_argument("--with-embeds", action="store_true",
+                    help="also the tutorial with every embed running (make test does this in keyboard_test.py --axe)")
     ap.add_argument("--timeout", type=float, default=400)
     args = ap.parse_args()
-    if not os.path.isfile(args.axe):
-        raise Failure(f"{args.axe} does not exist: make installs axe-core there (npm ci, site/tests/axe/package-lock.json); "
-                      f"run make test, or make site-deps")
-    with open(args.axe, encoding="utf-8") as f:
-        source = f.read()
+    source = read_axe(args.axe)
     widths = [int(w) for w in args.widths.split(",")]
     pages = pages_of(args.site)
     if args.tutorial not in pages:
         raise Failure(f"{args.site}/{args.tutorial} does not exist: build the site first (make site)")
-    embeds = os.path.isdir(os.path.join(args.site, "web"))
-    if args.need_embeds and not embeds:
-        raise Failure(f"{args.site}/web/ does not exist: the site was built without the web stages, so its embeds are untested")
     os.makedirs(args.out, exist_ok=True)
     started = time.monotonic()
-    lines, total, runs, details = [], 0, 0, {}
+    findings = Findings()
     with cdp.browsing(args.site, args.chromium, os.path.join(args.out, "chromium.log"), started + args.timeout,
                       gpu_args=cdp.RENDERERS["swiftshader"]) as (browser, base):
         _, session = cdp.open_tab(browser)
         set_axe_source(browser, session, source)
         for page in pages:
-            if embeds and page == args.tutorial:
-                continue  # checked below, with its embeds running
+            # Each page once per width, then its scheme switched as its toggle button does (a reload for
+            # the dark one would cost a second a page and check nothing more).
             for width in widths:
-                # Loaded in the light scheme, then switched as its toggle button does (a reload for the
-                # dark one would cost a second a page and check nothing more).
                 load(browser, session, base + page, width)
-                for scheme in ("light", "dark"):
-                    set_scheme(browser, session, scheme)
-                    total += report(f"{page} at {width} px, {scheme}", run_axe(browser, session), lines, details)
-                    runs += 1
-        if embeds:
-            # The tutorial with every embed running, started once at the widest width, then each width
-            # and scheme (the scheme set as its toggle button sets it).
+                check_loaded(browser, session, [width], page, findings)
+        if args.with_embeds:
             load(browser, session, base + args.tutorial, max(widths))
             stages = start_embeds(browser, session, 120)
-            for width in sorted(widths, reverse=True):
-                browser.send("Emulation.setDeviceMetricsOverride",
-                             {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
-                time.sleep(0.3)  # the resize event, on which site.js marks the blocks that now scroll
-                for scheme in ("light", "dark"):
-                    set_scheme(browser, session, scheme)
-                    total += report(f"{args.tutorial} with {len(stages)} embeds running at {width} px, {scheme}",
-                                    run_axe(browser, session), lines, details)
-                    runs += 1
-    elapsed = time.monotonic() - started
-    with open(os.path.join(args.out, "axe-report.txt"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    with open(os.path.join(args.out, "axe-nodes.json"), "w") as f:
-        json.dump(details, f, indent=1)
-    print(f"axe-core: {runs} runs over {len(pages)} pages ({', '.join(pages)}) at {args.widths} px, light and dark"
-          f"{', the tutorial with its embeds running' if embeds else ''}: {total} violating node(s) in {elapsed:.1f} s")
-    if total:
-        raise Failure(f"{total} violating node(s) (WCAG 2.0/2.1 A and AA, axe-core):\n  " + "\n  ".join(lines))
+            check_loaded(browser, session, widths, f"{args.tutorial} with {len(stages)} embeds running", findings)
+    findings.write(args.out, "axe")
+    print(f"axe-core: {findings.runs} runs over {len(pages)} pages ({', '.join(pages)}) at {args.widths} px, light and dark"
+          f"{', the tutorial with its embeds running' if args.with_embeds else ''}: {findings.total} violating node(s) "
+          f"in {time.monotonic() - started:.1f} s")
+    if findings.total:
+        raise findings.failure()
     return 0
 
 
