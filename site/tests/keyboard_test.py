@@ -86,17 +86,20 @@ DIGEST = r"""
 """
 
 
-def press(browser, session, key, modifiers=0, hold=0.0):
+def press(browser, session, key, modifiers=0, hold=None):
+    """The key pressed and released; hold: a function called between the two (the key held meanwhile)."""
     code, vk, text = KEYS[key]
     down = {"type": "keyDown" if text else "rawKeyDown", "key": key if key != " " else " ", "code": code,
             "windowsVirtualKeyCode": vk, "nativeVirtualKeyCode": vk, "modifiers": modifiers}
     if text:
         down["text"] = text
     browser.send("Input.dispatchKeyEvent", down, session)
-    if hold:
-        time.sleep(hold)
-    browser.send("Input.dispatchKeyEvent", {"type": "keyUp", "key": key, "code": code, "windowsVirtualKeyCode": vk,
-                                            "nativeVirtualKeyCode": vk, "modifiers": modifiers}, session)
+    try:
+        if hold:
+            hold()
+    finally:
+            browser.send("Input.dispatchKeyEvent", {"type": "keyUp", "key": key, "code": code, "windowsVirtualKeyCode": vk,
+                                                "nativeVirtualKeyCode": vk, "modifiers": modifiers}, session)
 
 
 def focus(browser, session):
@@ -156,10 +159,12 @@ def check_embed(browser, session, stage, timeout, need_controls, leave):
     # The camera keys, with the canvas focused.
     before = embed(browser, session, stage)["frames"]
     digest = evaluate(browser, session, f"{DIGEST}({json.dumps(stage)})")
-    press(browser, session, "w", hold=0.4)
     try:
-        cdp.wait_until(lambda: embed(browser, session, stage)["frames"], lambda n: n > before, 10,
-                       f"{stage}: W held on the canvas drew no new frame")
+        # Held until a frame is drawn (as a reader holds it until the view moves: a loaded machine may
+        # draw no frame in a short press), then a moment longer.
+        press(browser, session, "w", hold=lambda: (cdp.wait_until(
+            lambda: embed(browser, session, stage)["frames"], lambda n: n > before, 20,
+            f"{stage}: W held on the canvas drew no new frame"), time.sleep(0.2)))
         time.sleep(0.3)
         if evaluate(browser, session, f"{DIGEST}({json.dumps(stage)})") == digest:
             problems.append(f"{stage}: W held on the canvas drew frames, but the picture did not change")
