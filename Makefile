@@ -23,7 +23,7 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core webp
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -195,10 +195,10 @@ web-serve:
 .PHONY: site site-serve
 # make site installs the site's own tools (a build configured before they were installed looks again);
 # chromium measures the web stages' first frames when make web has built them ($(OUT)/web/).
-SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core webp
 site site-serve: PACKAGES += $(SITE_PACKAGES)
 site: configure
-	@! grep -Eq '^T10_(JEKYLL|CHROMIUM):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
+	@! grep -Eq '^T10_(JEKYLL|CHROMIUM|CWEBP):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site
 
 # The site's live embeds in headless Chromium (site/tests/live_test.py), after building the site with the
