@@ -43,6 +43,7 @@ help:
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
 	@echo "make site-deps  install the site tests' npm tools (axe-core, pinned) into $(BUILD)/site-axe/"
+	@echo "make site-audit  Lighthouse (mobile) on the tutorial page: accessibility 100, performance, LCP and bytes printed"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
@@ -215,6 +216,19 @@ site-deps:
 	@cmp -s site/tests/axe/package-lock.json $(SITE_AXE)/package-lock.json && [ -f $(SITE_AXE)/node_modules/axe-core/axe.min.js ] || { \
 	    rm -rf $(SITE_AXE) && mkdir -p $(SITE_AXE) && cp site/tests/axe/package.json site/tests/axe/package-lock.json $(SITE_AXE)/ && \
 	    npm ci --prefix $(SITE_AXE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "axe-core installed into $(SITE_AXE)"; }
+
+# make site-audit: Lighthouse (pinned 12.x, site/tests/lighthouse/; 13 needs Node 22) on the tutorial page with
+# its mobile preset: accessibility 100 asserted, performance, LCP and bytes printed (site/tests/lighthouse_audit.py).
+# About a minute and 185 MB of node_modules, so not in make test; .ci/run runs it.
+SITE_LIGHTHOUSE := $(BUILD)/site-lighthouse
+.PHONY: site-audit
+site-audit: site
+	@command -v npm >/dev/null || $(MAKE) --no-print-directory deps PACKAGES=npm
+	@cmp -s site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/package-lock.json && [ -x $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse ] || { \
+	    rm -rf $(SITE_LIGHTHOUSE) && mkdir -p $(SITE_LIGHTHOUSE) && cp site/tests/lighthouse/package.json site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/ && \
+	    npm ci --prefix $(SITE_LIGHTHOUSE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "Lighthouse installed into $(SITE_LIGHTHOUSE)"; }
+	python3 site/tests/lighthouse_audit.py --site $(BUILD)/site --page tutorial10.html --chromium $$(command -v chromium || command -v chromium-browser) \
+	    --lighthouse $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse --out $(BUILD)/site-tests/lighthouse
 
 .PHONY: site-live
 site-live: site

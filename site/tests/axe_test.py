@@ -75,8 +75,8 @@ def load(browser, session, url, width):
     browser.send("Emulation.setDeviceMetricsOverride", {"width": width, "height": 900, "deviceScaleFactor": 1, "mobile": False}, session)
     browser.send("Page.navigate", {"url": url}, session)
     browser.wait_event("Page.loadEventFired", session, timeout=60)
-    cdp.wait_until(lambda: evaluate(browser, session, "document.documentElement.dataset.math || ''"),
-                   lambda v: v != "", 20, "the page's script did not run (data-math unset)")
+    cdp.wait_until(lambda: evaluate(browser, session, "document.documentElement.dataset.scrollables || ''"),
+                   lambda v: v == "marked", 30, "the page's script did not finish (formulas, scrolling blocks)")
 
 
 def set_scheme(browser, session, scheme):

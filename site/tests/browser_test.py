@@ -287,6 +287,9 @@ def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, tim
             browser.wait_event("Page.loadEventFired", session, timeout=60)
             cdp.evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
             cdp.evaluate(browser, session, LOAD_LAZY, await_promise=True)
+            # site.js renders the formulas a few blocks at a time (data-math "rendering" meanwhile).
+            cdp.wait_until(lambda: cdp.evaluate(browser, session, "document.documentElement.dataset.math || ''"),
+                           lambda v: v not in ("", "rendering"), 30, "the formulas still rendering", interval=0.05)
             state = json.loads(cdp.evaluate(browser, session, PAGE_STATE))
             problems += check(state, page_html, steps, allow_missing_from, scheme, plain)
             problems += check_sections(browser, session, sections, scheme)
