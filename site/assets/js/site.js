@@ -27,6 +27,7 @@
         { left: "\\(", right: "\\)", display: false }
       ],
       ignoredTags: ["script", "noscript", "style", "textarea", "pre", "code"],
+      ignoredClasses: ["katex"],
       throwOnError: false
     };
     var blocks = Array.prototype.slice.call(content.children);
@@ -35,6 +36,9 @@
       var until = performance.now() + 30;
       while (blocks.length && performance.now() < until) renderMathInElement(blocks.shift(), options);
       if (blocks.length) return setTimeout(next, 0);
+      // Last, the text directly in the page's column (kramdown writes a displayed formula there, outside
+      // any element); the formulas drawn above are passed over (ignoredClasses).
+      renderMathInElement(content, options);
       root.setAttribute("data-math", "done");
       done();
     })();
