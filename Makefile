@@ -120,7 +120,8 @@ run: build
 # do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks it) and the suite's
 # small renders spend more CPU compiling shaders than drawing them (the vectors: ctest 163 s, not 168).
 test: PACKAGES += catch2 python3-venv
-test: deps site-deps
+test: deps
+	@$(MAKE) --no-print-directory site-deps || echo "warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so"
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
 	if [ -n "$$missing" ]; then \
 	    [ -z "$(SUDO)" ] || $(SUDO) true || exit 1; \
