@@ -32,10 +32,8 @@ import sys
 import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "markers"))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import markers  # noqa: E402
-import web_stages  # noqa: E402
+from markers import markers  # noqa: E402  (tools/ on PYTHONPATH)
+import web_stages  # noqa: E402  (beside this script)
 
 IMAGE_SIZE = "1280x720"
 # The frames as pages show them (issue 50: a 3 MiB tutorial page): WebP at these widths, offered through
