@@ -228,7 +228,7 @@ site-audit: site
 	@cmp -s site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/package-lock.json && [ -x $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse ] || { \
 	    rm -rf $(SITE_LIGHTHOUSE) && mkdir -p $(SITE_LIGHTHOUSE) && cp site/tests/lighthouse/package.json site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/ && \
 	    npm ci --prefix $(SITE_LIGHTHOUSE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "Lighthouse installed into $(SITE_LIGHTHOUSE)"; }
-	python3 site/tests/lighthouse_audit.py --site $(BUILD)/site --page tutorial10.html --chromium $$(command -v chromium || command -v chromium-browser) \
+	PYTHONPATH=$(CURDIR)/tools python3 site/tests/lighthouse_audit.py --site $(BUILD)/site --page tutorial10.html --chromium $$(command -v chromium || command -v chromium-browser) \
 	    --lighthouse $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse --out $(BUILD)/site-tests/lighthouse
 
 .PHONY: site-live

@@ -25,9 +25,8 @@ import sys
 import time
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
-import cdp  # noqa: E402  (the DevTools client)
-from cdp import Failure, evaluate  # noqa: E402
+from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
+from web.cdp import Failure, evaluate  # noqa: E402
 
 TAGS = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
 

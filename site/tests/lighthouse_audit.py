@@ -21,9 +21,8 @@ import sys
 import time
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
-import cdp  # noqa: E402  (the DevTools client's local server)
-from cdp import Failure  # noqa: E402
+from web import cdp  # noqa: E402  (the DevTools client's local server; tools/ on PYTHONPATH)
+from web.cdp import Failure  # noqa: E402
 
 
 def main():
