@@ -26,7 +26,7 @@ BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] &&
 FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
                  jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex python3-pygments \
-                 fonts-dejavu-core
+                 fonts-dejavu-core webp
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -45,6 +45,8 @@ help:
 	@echo "make web   build every stage for the browser (WebAssembly, WebGL 2) into $(OUT)/web/<stage>/ (STAGE=name for one; WEB_PRESET=web-release: -O3)"
 	@echo "make web-serve  serve $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (WEB_PORT=N)"
 	@echo "make site   build the documentation site into $(BUILD)/site/"
+	@echo "make site-deps  install the site tests' npm tools (axe-core, pinned) into $(BUILD)/site-axe/"
+	@echo "make site-audit  Lighthouse (mobile) on the tutorial page: accessibility 100, performance, LCP and bytes printed"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium and Firefox ESR"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
@@ -123,6 +125,7 @@ run: build
 # ctest 163 s, not 168).
 test: PACKAGES += catch2 python3-venv
 test: deps
+	@$(MAKE) --no-print-directory site-deps || echo "warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so"
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
 	if [ -n "$$missing" ]; then \
 	    [ -z "$(SUDO)" ] || $(SUDO) true || exit 1; \
@@ -198,11 +201,35 @@ web-serve:
 .PHONY: site site-serve
 # make site installs the site's own tools (a build configured before they were installed looks again);
 # chromium measures the web stages' first frames when make web has built them ($(OUT)/web/).
-SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core webp
 site site-serve: PACKAGES += $(SITE_PACKAGES)
 site: configure
-	@! grep -Eq '^T10_(JEKYLL|CHROMIUM):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
+	@! grep -Eq '^T10_(JEKYLL|CHROMIUM|CWEBP):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null
 	cmake --build $(BUILD) --target site
+
+# The site's tools that Debian lacks, pinned from the npm registry into $(BUILD)/ (npm ci: the versions and
+# integrity hashes of the lock file): axe-core (site/tests/axe/) for the accessibility test of make test.
+# npm is Debian's package where no npm is on PATH (NodeSource's nodejs carries its own).
+SITE_AXE := $(BUILD)/site-axe
+.PHONY: site-deps
+site-deps:
+	@command -v npm >/dev/null || $(MAKE) --no-print-directory deps PACKAGES=npm
+	@cmp -s site/tests/axe/package-lock.json $(SITE_AXE)/package-lock.json && [ -f $(SITE_AXE)/node_modules/axe-core/axe.min.js ] || { \
+	    rm -rf $(SITE_AXE) && mkdir -p $(SITE_AXE) && cp site/tests/axe/package.json site/tests/axe/package-lock.json $(SITE_AXE)/ && \
+	    npm ci --prefix $(SITE_AXE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "axe-core installed into $(SITE_AXE)"; }
+
+# make site-audit: Lighthouse (pinned 12.x, site/tests/lighthouse/; 13 needs Node 22) on the tutorial page with
+# its mobile preset: accessibility 100 asserted, performance, LCP and bytes printed (site/tests/lighthouse_audit.py).
+# About a minute and 185 MB of node_modules, so not in make test; .ci/run runs it.
+SITE_LIGHTHOUSE := $(BUILD)/site-lighthouse
+.PHONY: site-audit
+site-audit: site
+	@command -v npm >/dev/null || $(MAKE) --no-print-directory deps PACKAGES=npm
+	@cmp -s site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/package-lock.json && [ -x $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse ] || { \
+	    rm -rf $(SITE_LIGHTHOUSE) && mkdir -p $(SITE_LIGHTHOUSE) && cp site/tests/lighthouse/package.json site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/ && \
+	    npm ci --prefix $(SITE_LIGHTHOUSE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "Lighthouse installed into $(SITE_LIGHTHOUSE)"; }
+	PYTHONPATH=$(CURDIR)/tools python3 site/tests/lighthouse_audit.py --site $(BUILD)/site --page tutorial10.html --chromium $$(command -v chromium || command -v chromium-browser) \
+	    --lighthouse $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse --out $(BUILD)/site-tests/lighthouse
 
 # The site's live embeds in headless Chromium (site/tests/live_test.py), after building the site with the
 # web stages: every stage's embed renders, the exercises' controls change the frame and back, without

@@ -9,7 +9,8 @@ beyond the Python standard library and Debian's chromium is needed. Chromium res
 Checks, in both the light and the dark scheme:
   - every formula rendered: as many KaTeX elements as the HTML has \\( \\) and \\[ \\] formulas, no
     KaTeX error, no raw $$, \\( or \\[ left in the text;
-  - every image loaded (complete, natural width > 0; the rendered frames are 1280x720);
+  - every image loaded (complete, natural width > 0; the lazy ones are made to load first), the rendered
+    frames 16:9 at one of the widths their srcset offers (640, 960, 1280) and linked to their PNG;
   - nothing makes the page wider than the window (--width 400: captions and code captions wrap);
   - the step numbers the reader sees (CSS counters, read back from the layout) run 1..N in order and
     match the step anchors;
@@ -72,6 +73,11 @@ def expected_formulas(path):
 
 # --- What the page shows -------------------------------------------------------------------------
 
+# Pictures below the first screen load lazily: each is told to load now, and waited for (a broken one too).
+LOAD_LAZY = r"""
+Promise.all([...document.images].map(i => { i.loading = 'eager'; return i.decode().catch(() => null); })).then(() => true)
+"""
+
 PAGE_STATE = r"""
 (() => {
   const content = document.querySelector('.content');
@@ -88,7 +94,8 @@ PAGE_STATE = r"""
     if (/\$\$|\\\(|\\\)|\\\[|\\\]/.test(n.nodeValue)) raw.push(n.nodeValue.trim().slice(0, 80));
   r.rawMath = raw;
   r.images = [...document.images].map(i => ({src: i.getAttribute('src'), complete: i.complete,
-    w: i.naturalWidth, h: i.naturalHeight, render: !!i.closest('figure.render:not(.derived)')}));
+    w: i.naturalWidth, h: i.naturalHeight, render: !!i.closest('figure.render:not(.derived)'),
+    link: i.closest('a') ? i.closest('a').getAttribute('href') : '', current: i.currentSrc}));
   r.items = [...document.querySelectorAll('.steps > ol:not(#markdown-toc) > li')].map(li => li.id);
   r.excerpts = [...document.querySelectorAll('.content figure.excerpt')].map(f => ({
     step: f.dataset.step, stage: f.dataset.stage, file: f.dataset.file,
@@ -211,8 +218,13 @@ def check(state, page_html, expected_steps, allow_missing_from, label, plain=Fal
     for img in state["images"]:
         if not img["complete"] or img["w"] <= 0:
             problems.append(f"image not loaded: {img['src']}")
-        elif img["render"] and (img["w"], img["h"]) != (1280, 720):
-            problems.append(f"rendered frame {img['src']} is {img['w']}x{img['h']}, not 1280x720")
+        elif img["render"] and (not re.search(r"-(640|960|1280)\.webp$", img["current"])
+                                or abs(img["w"] * 9 - img["h"] * 16) > 16):
+            # natural size: the candidate's width scaled to the layout's (sizes), so 16:9 within a pixel
+            problems.append(f"rendered frame {img['src']} shows {img['current']} at {img['w']}x{img['h']}, "
+                            f"not a 16:9 WebP at 640, 960 or 1280 px")
+        elif img["render"] and not img["link"].endswith(".png"):
+            problems.append(f"rendered frame {img['src']} does not link to its PNG (link {img['link']!r})")
     if state["scrollWidth"] > state["innerWidth"] + 1:
         problems.append(f"the page is {state['scrollWidth']} px wide in a {state['innerWidth']} px window, so it "
                         f"pans sideways; sticking out: {state['wide']}")
@@ -273,6 +285,10 @@ def run(site, page, chromium, out, steps, allow_missing_from=37, width=1280, tim
             browser.send("Page.navigate", {"url": base + page}, session)
             browser.wait_event("Page.loadEventFired", session, timeout=60)
             cdp.evaluate(browser, session, "document.fonts.ready.then(() => true)", await_promise=True)
+            cdp.evaluate(browser, session, LOAD_LAZY, await_promise=True)
+            # site.js renders the formulas a few blocks at a time (data-math "rendering" meanwhile).
+            cdp.wait_until(lambda: cdp.evaluate(browser, session, "document.documentElement.dataset.math || ''"),
+                           lambda v: v not in ("", "rendering"), 30, "the formulas still rendering", interval=0.05)
             state = json.loads(cdp.evaluate(browser, session, PAGE_STATE))
             problems += check(state, page_html, steps, allow_missing_from, scheme, plain)
             problems += check_sections(browser, session, sections, scheme)

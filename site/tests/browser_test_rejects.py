@@ -43,7 +43,13 @@ def main():
     images = re.findall(r'<img src="(assets/images/[^"]+)"', text)
     if not images:
         raise browser_test.Failure(f"{args.page} has no rendered images to break")
-    os.remove(os.path.join(broken, images[0]))
+    # The frame in every size its srcset offers (whichever the browser picks is gone).
+    stem = re.sub(r"-\d+\.webp$", "", images[0])
+    for name in os.listdir(os.path.dirname(os.path.join(broken, images[0]))):
+        if re.fullmatch(re.escape(os.path.basename(stem)) + r"-\d+\.webp", name):
+            os.remove(os.path.join(broken, os.path.dirname(images[0]), name))
+    if os.path.exists(os.path.join(broken, images[0])):
+        os.remove(os.path.join(broken, images[0]))
     os.remove(os.path.join(broken, "assets", "katex", "contrib", "auto-render.js"))
     css = os.path.join(broken, "assets", "css", "site.css")
     with open(css, "a", encoding="utf-8") as f:

@@ -257,8 +257,12 @@ def check_no_webgl(chromium, site, page, out, timeout, width):
     with cdp.browsing(site, chromium, os.path.join(out, "chromium-no-webgl.log"), time.monotonic() + timeout,
                       gpu_args=("--disable-gpu", "--disable-3d-apis")) as (browser, base):
         session = open_page(browser, base + page, width)
-        current = wait_until(browser, session, lambda c: all(s["state"] != "idle" or not s["src"] for s in c),
-                             timeout / 2, "the embeds did not notice the missing WebGL")
+        wait_until(browser, session, lambda c: all(s["state"] != "idle" or not s["src"] for s in c),
+                   timeout / 2, "the embeds did not notice the missing WebGL")
+        # The pictures below the first screen load lazily: each is made to load, then looked at.
+        evaluate(browser, session, "Promise.all([...document.images].map(i => { i.loading = 'eager'; "
+                                   "return i.decode().catch(() => null); })).then(() => true)", await_promise=True)
+        current = states(browser, session)
         for s in current:
             if not s["src"]:
                 continue

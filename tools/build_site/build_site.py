@@ -8,7 +8,8 @@
    - the diff from each stage folder to the next        -> _data/diffs.json
    - the --help text of the stage binaries              -> _data/cli.json
    - the golden-image settings and tolerances           -> _data/goldens.json
-   - the images the pages show, rendered by the stages  -> assets/images/
+   - the images the pages show, rendered by the stages  -> assets/images/ (PNG, and WebP at the widths
+                                                           the pages offer, made by Debian's cwebp)
    - KaTeX (Debian's libjs-katex and fonts-katex)        -> assets/katex/
    - the web stages' sizes and first-frame times         -> _data/web.json (web_stages.py)
 3. Checks every excerpt and figure the pages ask for exists (an error names the page and line).
@@ -19,6 +20,7 @@ Nothing is written into the source tree. Usage: see --help; site/CMakeLists.txt 
 """
 
 import argparse
+import concurrent.futures
 import difflib
 import json
 import os
@@ -34,6 +36,12 @@ from markers import markers  # noqa: E402  (tools/ on PYTHONPATH)
 import web_stages  # noqa: E402  (beside this script)
 
 IMAGE_SIZE = "1280x720"
+# The frames as pages show them (issue 50: a 3 MiB tutorial page): WebP at these widths, offered through
+# srcset (figure.html; 960 fills the text column at 1280 px, 640 a phone's or half the column), the
+# PNG behind a link. Quality 80: on these dim, noisy frames the difference from the PNG is invisible at
+# the column's size, and a 960-px frame weighs 40-80 KB instead of the PNG's 1.0-1.6 MB.
+WEBP_WIDTHS = (640, 960, 1280)
+WEBP_QUALITY = "80"
 # Files of site/ that are tooling, not pages.
 NOT_PAGES = {"tools", "tests", "CMakeLists.txt", "README.md", "_site", ".jekyll-cache", "__pycache__"}
 INCLUDE = re.compile(r"\{%-?\s*include\s+(?P<name>excerpt|figure|derived|live)\.html\s+(?P<args>.*?)\s*-?%\}")
@@ -386,6 +394,22 @@ def make_derived(derived, bin_dir, images_dir):
     return table
 
 
+def compress_frames(images_dir, names, cwebp):
+    """<name>-<width>.webp beside each rendered <name>.png, for every width of WEBP_WIDTHS (two at a time:
+    cwebp is single-threaded)."""
+    jobs = [(os.path.join(images_dir, n), w) for n in sorted(names) for w in WEBP_WIDTHS]
+
+    def encode(job):
+        png, width = job
+        run([cwebp, "-quiet", "-q", WEBP_QUALITY, "-m", "4", "-resize", str(width), "0", png,
+             "-o", png[:-len(".png")] + f"-{width}.webp"])
+
+    started = time.monotonic()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        list(pool.map(encode, jobs))
+    log(f"{len(jobs)} WebP versions of {len(names)} frames ({time.monotonic() - started:.1f} s)")
+
+
 def slugify(text):
     """Jekyll's default `slugify`: lower case, runs of anything but letters and digits to '-'."""
     return re.sub(r"[^a-z0-9]+", "-", text.lower()).strip("-")
@@ -569,6 +593,7 @@ def main():
                          "instead of running the binaries (tests)")
     ap.add_argument("--katex", default="/usr/share/javascript/katex", help="KaTeX distribution")
     ap.add_argument("--jekyll", default="jekyll", help="jekyll executable")
+    ap.add_argument("--cwebp", default="cwebp", help="cwebp executable (Debian: webp)")
     ap.add_argument("--web", help="the web stages (make web: out/web), copied into the site when built")
     ap.add_argument("--web-measurements", help="measure_web.py's JSON: the time to each web stage's first frame")
     args = ap.parse_args()
@@ -633,6 +658,9 @@ def main():
         generated["cli.json"] = cli_help(stages, os.path.abspath(args.bin))
         render_images(renders, os.path.abspath(args.bin), images, source_root)
         generated["derived.json"] = make_derived(derived, os.path.abspath(args.bin), images)
+    if not shutil.which(args.cwebp):
+        raise SiteError(f"{args.cwebp}: not found (install the Debian package webp)")
+    compress_frames(images, [image_name(*r) for r in renders], args.cwebp)
 
     for name, value in generated.items():
         with open(os.path.join(data, name), "w", encoding="utf-8") as f:

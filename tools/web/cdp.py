@@ -5,7 +5,8 @@ only the Python standard library and Debian's chromium are needed. A local stati
 (a free port) serves the pages, and every other host name resolves to "not found": a page that reaches
 for the network fails loudly.
 
-Used by the site's browser tests (site/tests/browser_test.py, live_test.py), the web stages' tests
+Used by the site's browser tests (site/tests/browser_test.py, live_test.py, axe_test.py, keyboard_test.py,
+weight_test.py; lighthouse_audit.py for its server), the web stages' tests
 (tests/web/web_test.py, through web_page.py), the site build's first-frame measurement
 (tools/build_site/measure_web.py), make web-serve (web_page.py), the GLSL ES translations' browser
 test (tests/unit/test_glsl_es_browser.cpp, through page_value.py) and the dev container's noVNC

@@ -124,14 +124,32 @@
 
   function isOn(value) { return value === "1" || value === "true"; }
 
-  function makeControl(option, apply) {
-    var row = document.createElement("label");
+  // An option's name in words ("white-point" -> "White point"): the control's label; the command-line
+  // flag and the option's help are its hint (aria-describedby), shown beside it.
+  function words(name) {
+    var text = name.replace(/-/g, " ");
+    return text.charAt(0).toUpperCase() + text.slice(1);
+  }
+
+  var controlCount = 0;
+
+  function makeControl(option, apply, stage) {
+    var row = document.createElement("div");
     row.className = "live-control";
-    row.setAttribute("data-option", option.name);
-    if (option.help) row.title = option.help;
-    var name = document.createElement("span");
+    var id = "live-" + stage + "-" + option.name + "-" + (++controlCount);
+    var name = document.createElement("label");
     name.className = "live-name";
-    name.textContent = option.type === "flag" ? "--" + option.name : "--" + option.name + " ";
+    name.htmlFor = id;
+    name.textContent = words(option.name);
+    var hint = document.createElement("code");
+    hint.className = "live-flag";
+    hint.id = id + "-hint";
+    hint.textContent = "--" + option.name;
+    if (option.help) hint.title = option.help;
+    var help = document.createElement("span");
+    help.className = "visually-hidden";
+    help.id = id + "-help";
+    help.textContent = option.help ? ": " + option.help : "";
     var value = option.value;
     var input, shown = null;
     if (option.type === "flag") {
@@ -140,6 +158,7 @@
       input.checked = isOn(value);
       row.appendChild(input);
       row.appendChild(name);
+      row.appendChild(hint);
       input.addEventListener("change", function () { apply(option.name, input.checked ? "1" : "0", input); });
     } else if (option.type === "choice") {
       input = document.createElement("select");
@@ -150,6 +169,7 @@
       });
       input.value = value;
       row.appendChild(name);
+      row.appendChild(hint);
       row.appendChild(input);
       input.addEventListener("change", function () { apply(option.name, input.value, input); });
     } else if ((option.type === "float" || option.type === "int") && option.min !== undefined) {
@@ -161,8 +181,10 @@
       input.step = option.type === "int" ? 1 : Math.pow(10, Math.floor(Math.log10((option.max - option.min) / 100)));
       input.value = value;
       shown = document.createElement("output");
+      shown.htmlFor = id;
       shown.textContent = value;
       row.appendChild(name);
+      row.appendChild(hint);
       row.appendChild(input);
       row.appendChild(shown);
       input.addEventListener("input", function () { shown.textContent = input.value; });
@@ -174,6 +196,9 @@
     } else {
       return null;  // no control for a free-text option
     }
+    input.id = id;
+    input.setAttribute("aria-describedby", hint.id + " " + help.id);
+    row.appendChild(help);
     input.setAttribute("data-option", option.name);
     input.setAttribute("data-default", String(option.default || ""));
     row.setAttribute("data-type", option.type);
@@ -213,7 +238,7 @@
       });
     }
     list.forEach(function (option) {
-      var control = makeControl(option, apply);
+      var control = makeControl(option, apply, live.getAttribute("data-stage"));
       if (control) box.appendChild(control);
     });
     if (!box.children.length) {
@@ -264,8 +289,16 @@
       var style = doc.createElement("style");
       style.textContent = "html, body { margin: 0 !important; padding: 0 !important; background: #000 !important; overflow: hidden; }" +
           " #t10-status { display: none !important; }" +
-          " canvas { display: block; width: 100% !important; height: auto !important; max-width: none !important; }";
+          " canvas { display: block; width: 100% !important; height: auto !important; max-width: none !important; }" +
+          " canvas:focus-visible { outline: 3px solid #ffbf47 !important; outline-offset: -3px; }";
       doc.head.appendChild(style);
+      // Escape leaves the frame for the embed's controls (Tab and Shift+Tab leave it too: the page
+      // keeps emscripten's GLFW from taking Tab).
+      frame.contentWindow.addEventListener("keydown", function (event) {
+        if (event.key !== "Escape") return;
+        var next = live.querySelector(".live-controls input, .live-controls select") || live.querySelector(".live-note");
+        if (next) next.focus();
+      });
     });
     figure.insertBefore(frame, picture);
     live.classList.add("live-loading");
@@ -276,8 +309,16 @@
       live.setAttribute("data-first-frame-ms", String(Math.round(seconds * 1000)));
       live.classList.add("live-running");
       setState(live, "rendered", "Live: first frame after " + seconds.toFixed(1) +
-               " s in this browser. Drag to look around, scroll to zoom, WASD and Q/E to move.");
+               " s in this browser. Drag to look around, scroll to zoom, WASD and Q/E to move (with the frame focused;" +
+               " Tab or Escape leaves it).");
       buildControls(live, frame);
+      // Started from its button, the reader's focus waited on the status line: it moves to the frame,
+      // whose keys move the camera.
+      var note = live.querySelector(".live-note");
+      if (note && document.activeElement === note) {
+        var canvas = frame.contentDocument && frame.contentDocument.getElementById("canvas");
+        if (canvas) canvas.focus();
+      }
     });
   }
 
@@ -293,7 +334,15 @@
         return;
       }
       setState(live, "idle");
-      if (button) button.addEventListener("click", function () { button.hidden = true; start(live); });
+      var note = live.querySelector(".live-note");
+      if (note) note.setAttribute("tabindex", "-1");
+      // The button disappears when pressed: the focus goes to the status line, which says what happens.
+      if (button) button.addEventListener("click", function () {
+        var focused = document.activeElement === button;
+        button.hidden = true;
+        start(live);
+        if (focused && note) note.focus();
+      });
     });
   }
 
