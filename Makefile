@@ -16,14 +16,15 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
 # tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter;
-# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; emscripten: the
+# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; default-jre-headless:
+# the Java that runs JPlag for the similarity tests; emscripten: the
 # browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
 # run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
 # that installs the snap); the site's CMake finds either program.
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
+                 default-jre-headless jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -55,6 +56,8 @@ help:
 	@echo "make grade-sweep  every fitted constant of the grader's mistake catalogue across its fit's range: named, measured within 10 %"
 	@echo "make grade-jobs-check  a fork bomb graded beside honest submissions (--jobs 2) by a non-root grader, 20 rounds: none starved"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
+	@echo "make similarity-deps  install Java (Debian) and JPlag (pinned jars, from Maven Central) into $(SIMILARITY_ENGINE)/"
+	@echo "make similarity PART=N SUBMISSIONS=\"dir ...\"|SUBMISSIONS_DIR=folder  pairs of students to review (JPlag, the handed-out code excluded) into $(REPORT)/"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
 	@echo "make grader-packages  print the packages make grader installs (grader/platforms/install_grader.sh checks them)"
 	@echo "make gradescope PART=1|2|3  package a Gradescope autograder into $(OUT)/gradescope/partN/autograder.zip"
@@ -351,9 +354,31 @@ grade-jobs-check: build grade-deps
 	rc=$$?; [ $$rc -eq 77 ] && echo "grade-jobs-check: SKIPPED (above: why)" && exit 0; exit $$rc
 
 # The grader's tests need FLIP too (make test makes it); without it (no network for PyPI) they report
-# themselves skipped.
+# themselves skipped. The same for JPlag's jars (make test installs Java with the test packages).
 grade-deps-or-skip:
 	@$(MAKE) --no-print-directory grade-deps || echo "warning: FLIP could not be installed: the grader's tests will be skipped"
+	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE) || \
+	    echo "warning: JPlag could not be fetched: the similarity tests will be skipped"
+
+# Similarity between students (issue 51; grader/similarity/): JPlag 4.3.0, a library on Maven Central,
+# pinned jar by jar (size and SHA-256) in grader/similarity/jplag.lock and fetched into
+# $(SIMILARITY_ENGINE)/ by similarity-deps; run by Debian's Java (default-jre-headless: OpenJDK 17 on
+# Debian 12, 21 on Debian 13 and Ubuntu 24.04; JPlag 4.3 needs 17 or later). Nothing is fetched when it
+# runs. make similarity PART=N SUBMISSIONS="dir ..." (or SUBMISSIONS_DIR=folder of submission folders)
+# writes similarity.json, .csv and .html into $(REPORT)/; t10-grade --similarity does the same after
+# grading a class. Neither make run nor make build needs any of it.
+SIMILARITY_ENGINE := $(BUILD)/jplag
+.PHONY: similarity similarity-deps
+similarity-deps:
+	@$(MAKE) --no-print-directory deps PACKAGES=default-jre-headless
+	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE)
+
+similarity: similarity-deps
+	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)$(SUBMISSIONS_DIR)" ] || { \
+	    echo 'usage: make similarity PART=1|2|3 SUBMISSIONS="dir ..." | SUBMISSIONS_DIR=folder [REPORT=dir] [SIMILARITY_THRESHOLD=x]'; exit 2; }
+	python3 grader/similarity/similarity.py --part $(PART) --report $(REPORT) --engine $(SIMILARITY_ENGINE) \
+	    $(if $(SIMILARITY_THRESHOLD),--threshold $(SIMILARITY_THRESHOLD)) \
+	    $(if $(SUBMISSIONS_DIR),--folder "$(SUBMISSIONS_DIR)") $(SUBMISSIONS)
 
 # Students (tools/check/): `make student PART=N` starts student/partN/ (Part 1 from
 # tutorial10_part0_start/, Part N from the student's own part(N-1) or else the reference of Part N-1);
