@@ -57,6 +57,7 @@ help:
 	@echo "make grade-jobs-check  a fork bomb graded beside honest submissions (--jobs 2) by a non-root grader, 20 rounds: none starved"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
 	@echo "make similarity-deps  install Java (Debian) and JPlag (pinned jars, from Maven Central) into $(SIMILARITY_ENGINE)/"
+	@echo "make bench-similarity  compare 900 generated Part 3 submissions with JPlag: wall and CPU time, peak memory"
 	@echo "make similarity PART=N SUBMISSIONS=\"dir ...\"|SUBMISSIONS_DIR=folder  pairs of students to review (JPlag, the handed-out code excluded) into $(REPORT)/"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
 	@echo "make grader-packages  print the packages make grader installs (grader/platforms/install_grader.sh checks them)"
@@ -372,6 +373,12 @@ SIMILARITY_ENGINE := $(BUILD)/jplag
 similarity-deps:
 	@$(MAKE) --no-print-directory deps PACKAGES=default-jre-headless
 	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE)
+
+# make bench-similarity: 900 generated Part 3 submissions compared (grader/similarity/bench_similarity.py):
+# wall and CPU time, peak memory; fails above two minutes of wall time.
+.PHONY: bench-similarity
+bench-similarity: similarity-deps
+	python3 grader/similarity/bench_similarity.py $(CURDIR) $(SIMILARITY_ENGINE) $(OUT)/bench-similarity
 
 similarity: similarity-deps
 	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)$(SUBMISSIONS_DIR)" ] || { \

@@ -9,7 +9,8 @@
 //   P <a> <b> <similarity> <matched tokens>         one per pair with at least one match
 //   M <a file> <a first line> <a last line> <b file> <b first line> <b last line> <tokens>
 //                                                    the matches of the P line above
-// usage: java -cp LIB/* JPlagPairs.java cpp ROOT BASE SUFFIXES MIN_TOKENS OUT   (SUFFIXES: .cpp,.hpp)
+// usage: java -cp LIB/* JPlagPairs.java cpp ROOT BASE SUFFIXES MIN_TOKENS OUT   (SUFFIXES: .cpp,.hpp;
+//        BASE - for none)
 // Exit 0 with the file written; 1 naming the fault (JPlag's own message) otherwise.
 import de.jplag.JPlag;
 import de.jplag.JPlagComparison;
@@ -65,12 +66,12 @@ public final class JPlagPairs {
         Path partial = Path.of(args[5] + ".partial");
         try {
             JPlagOptions options = new JPlagOptions(new de.jplag.cpp.Language(), Set.of(new File(args[1])), Set.of())
-                    .withBaseCodeSubmissionDirectory(new File(args[2]))
                     .withFileSuffixes(Arrays.asList(args[3].split(",")))
                     .withMinimumTokenMatch(Integer.parseInt(args[4]))
                     .withSimilarityThreshold(0.0)
                     .withMaximumNumberOfComparisons(JPlagOptions.SHOW_ALL_COMPARISONS)
                     .withClusteringOptions(new ClusteringOptions().withEnabled(false));
+            if (!args[2].equals("-")) options = options.withBaseCodeSubmissionDirectory(new File(args[2]));
             JPlagResult result = new JPlag(options).run();
             try (BufferedWriter w = Files.newBufferedWriter(partial, StandardCharsets.UTF_8)) {
                 w.write("V\t" + JPlag.JPLAG_VERSION + "\t" + options.language().getName() + "\t"

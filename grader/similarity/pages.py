@@ -6,8 +6,10 @@ control characters were already replaced (similarity.display_text), and the file
 import html
 import os
 
-# Pages are written for every flagged pair and for the best unflagged ones after them, for context.
+# Pages are written for the flagged pairs (the first MAX_PAGES) and for the best unflagged ones after
+# them, for context.
 UNFLAGGED_PAGES = 20
+MAX_PAGES = 300
 # The overview's table stops here; similarity.csv and similarity.json have every pair.
 OVERVIEW_ROWS = 200
 COLOURS = ["#ffe08a", "#a8e6a1", "#9fd3ff", "#f7b2d9", "#c9b8ff", "#ffc59e", "#b8f0e6", "#e0e0a0"]
@@ -35,9 +37,12 @@ def rule_text(languages, override):
         return f"threshold {override:.2f} in either language, the instructor's (--threshold)"
     parts = []
     for name, lang in languages.items():
-        n = len(lang.compared)
-        parts.append(f"{name} code {lang.threshold:.2f} (over its {n * (n - 1) // 2} pairs: Q1 {lang.q1:.2f}, "
-                     f"Q3 {lang.q3:.2f})")
+        if lang.q1 is None:
+            parts.append(f"{name} code {lang.threshold:.2f} (the floor: {len(lang.pairs)} pairs share anything, "
+                         "too few for quartiles)")
+        else:
+            parts.append(f"{name} code {lang.threshold:.2f} ({len(lang.pairs)} pairs share anything: Q1 "
+                         f"{lang.q1:.2f}, Q3 {lang.q3:.2f})")
     return "thresholds: " + "; ".join(parts)
 
 
@@ -46,8 +51,9 @@ def explanation(template, part):
             f"{part}, the host code and the shaders each in its own run, after removing what the course hands out "
             f"({len(template)} template files: Part 0, the reference of each part up to this one, and the tutorial's "
             "own snippets where the reference fixed them), so two students who typed the tutorial are not paired. "
-            "A pair is flagged when its similarity in one language is a far outlier of this class (above Q3 + 3 IQR "
-            "of every pair's similarity, and at least 0.30) and rests on at least 24 shared tokens. Shared code can "
+            "A pair is flagged when its similarity in one language is a far outlier among this class's pairs that "
+            "share anything (Q3 + 3 IQR, kept between 0.30 and 0.80; 0.30 when fewer than 20 pairs share anything) "
+            "and rests on at least 24 shared tokens. Shared code can "
             "have an honest cause (working together where allowed, a common source the course did not hand out): "
             "open each page and compare the highlighted fragments before you decide anything.</p>\n")
 
@@ -144,6 +150,8 @@ def write_pages(write, report, pairs, languages, submissions, override, template
             unflagged += 1
             if unflagged > UNFLAGGED_PAGES:
                 continue
+        if len(pages_of) >= MAX_PAGES:
+            break
         page = f"similarity/pair-{rank:04d}.html"
         write(os.path.join(report, page), pair_page(rank, record, detail, sides, languages, override))
         pages_of[rank] = page

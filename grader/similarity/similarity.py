@@ -12,12 +12,12 @@ similarity.csv, similarity.html (the pairs to review) and similarity/pair-NNNN.h
 by side, the shared fragments highlighted).
 
 Submissions: SUBMISSION folders (named after their last component), every folder inside --folder DIR,
-or --manifest FILE, a JSON list of {"name": ..., "path": ...} (t10-grade --similarity writes one with
-the names of its report folders). Their files are only read: regular files with a host (.cpp, .h ...)
+or --manifest FILE, pairs of NAME NUL PATH NUL (t10-grade --similarity writes one with the names of
+its report folders). Their files are only read: regular files with a host (.cpp, .h ...)
 or shader (.frag, .vert ...) suffix, no symlinks, 256 KiB each, 64 per submission.
 
---threshold X flags every pair whose similarity in either language reaches X instead of the class's
-own threshold (see flag_threshold); --no-template compares without the template (to see what it
+--threshold X flags every pair whose similarity in either language reaches X (with 24 shared tokens)
+instead of the class's own threshold (see flag_threshold); --no-template compares without the template (to see what it
 removes). Exit 0 with the files written, 1 naming the fault (no Java, no engine, JPlag's failure), 2 on
 bad usage.
 """
@@ -53,10 +53,13 @@ MAX_DEPTH = 6
 STAGES = ["tutorial10_part0_start", "tutorial10_part1_tonemap", "tutorial10_part2_bloom", "tutorial10_part3_gaussian"]
 HANDED_OUT = ["common/shaders/FullScreenQuad.vert"]  # shaders a part uses but students do not write
 
-# The class's threshold (flag_threshold): Tukey's far-out fence over every pair's similarity, never
-# below FLOOR; and a pair needs MIN_EVIDENCE shared tokens in the language that flags it.
+# The class's threshold (flag_threshold): Tukey's far-out fence over the similarities of the pairs
+# that share anything beyond the template, kept within [FLOOR, CEILING]; and a pair needs MIN_EVIDENCE
+# shared tokens in the language that flags it.
 FENCE_IQRS = 3.0
 FLOOR = 0.3
+CEILING = 0.8
+MIN_SAMPLE = 20  # fewer pairs sharing anything give no quartiles worth the name: the floor
 MIN_EVIDENCE = 24  # two minimum matches
 MIN_MATCH = 12  # JPlag's default for its C/C++ scanner
 
@@ -65,16 +68,22 @@ class Fault(Exception):
     """A failure to report in one line with exit status 1."""
 
 
+def shown(c):
+    """Whether a character is shown as itself: not a control character nor a bidirectional override
+    (which would let code read in another order than it runs)."""
+    return c >= " " and c != "\x7f" and not ("\u202a" <= c <= "\u202e" or "\u2066" <= c <= "\u2069")
+
+
 def display_name(raw):
-    """A path or name as text: undecodable bytes and control characters replaced."""
+    """A path or name as text: undecodable bytes, control characters and bidi overrides replaced."""
     text = os.fsencode(raw).decode("utf-8", "replace") if isinstance(raw, str) else raw.decode("utf-8", "replace")
-    return "".join(c if c >= " " and c != "\x7f" else "\ufffd" for c in text)
+    return "".join(c if shown(c) else "\ufffd" for c in text)
 
 
 def display_text(data):
-    """File contents as text with lines: UTF-8 (else U+FFFD), control characters but tab replaced."""
+    """File contents as text with lines: UTF-8 (else U+FFFD), what display_name replaces but tabs replaced."""
     text = data.decode("utf-8", "replace").replace("\r\n", "\n").replace("\r", "\n")
-    return "".join(c if c in "\n\t" or (c >= " " and c != "\x7f") else "\ufffd" for c in text)
+    return "".join(c if c in "\n\t" or shown(c) else "\ufffd" for c in text)
 
 
 def read_regular(path):
@@ -126,7 +135,7 @@ def collect(folder):
 class Submission:
     def __init__(self, index, name, path):
         self.id = f"s{index:04d}"
-        self.name = name
+        self.name = display_name(name)  # what the report shows: valid UTF-8, no control characters
         self.files = collect(path)
         self.staged = {}  # language -> {staged file name: (index into files, its first line there - 1)}
 
@@ -199,8 +208,7 @@ def run_engine(java, engine, work, language, no_template):
     out = os.path.join(work, f"{language}.tsv")
     base = os.path.join(work, f"template-{language}")
     if no_template or not os.path.isdir(base):
-        base = os.path.join(work, "empty-template")
-        os.makedirs(base, exist_ok=True)
+        base = "-"  # none
     command = [java, "-cp", os.path.join(engine, "lib", "*"), DRIVER, "cpp", os.path.join(work, language), base,
                ",".join(LANGUAGES[language]), str(MIN_MATCH), out]
     result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace")
@@ -221,12 +229,18 @@ def quantile(values, q):
     return values[low] + (values[high] - values[low]) * (at - low)
 
 
-def flag_threshold(similarities, pairs_total):
-    """The class's threshold for one language: Q3 + 3 IQR of every pair's similarity (pairs with nothing
-    shared count as 0), never below FLOOR. Returns (threshold, q1, q3)."""
-    values = sorted([0.0] * (pairs_total - len(similarities)) + list(similarities))
+def flag_threshold(similarities):
+    """The class's threshold for one language: Q3 + 3 IQR of the similarities of the pairs that share
+    anything beyond the template (a far outlier of this class's coincidences: JPlag matches any run of
+    12 tokens, and the scanner's tokens are few, so honest students share short runs), never below
+    FLOOR (less is a small part of what two students wrote beyond the template) nor above CEILING (a
+    class with many copies would otherwise raise its own fence above them); FLOOR itself where fewer
+    than MIN_SAMPLE pairs share anything. Returns (threshold, q1, q3)."""
+    values = sorted(similarities)
+    if len(values) < MIN_SAMPLE:
+        return FLOOR, None, None
     q1, q3 = quantile(values, 0.25), quantile(values, 0.75)
-    return max(FLOOR, q3 + FENCE_IQRS * (q3 - q1)), q1, q3
+    return min(CEILING, max(FLOOR, q3 + FENCE_IQRS * (q3 - q1))), q1, q3
 
 
 class Language:
@@ -261,8 +275,7 @@ class Language:
             elif row[0] == "M":
                 first, second = (row[1:4], row[4:7]) if not current[3] else (row[4:7], row[1:4])
                 current[2].append((first, second, int(row[7])))
-        n = len(self.compared)
-        self.threshold, self.q1, self.q3 = flag_threshold([p[0] for p in self.pairs.values()], n * (n - 1) // 2)
+        self.threshold, self.q1, self.q3 = flag_threshold([p[0] for p in self.pairs.values()])
 
     def flags(self, key, override):
         similarity, matched = self.pairs[key][0], self.pairs[key][1]
@@ -347,10 +360,13 @@ def submissions_of(parser, args):
     named = []
     if args.manifest:
         try:
-            with open(args.manifest, encoding="utf-8") as f:
-                named += [(str(entry["name"]), str(entry["path"])) for entry in json.load(f)]
-        except (OSError, ValueError, KeyError, TypeError) as error:
-            parser.error(f"--manifest {args.manifest}: not a JSON list of {{name, path}}: {error}")
+            with open(args.manifest, "rb") as f:
+                fields = f.read().split(b"\0")
+        except OSError as error:
+            parser.error(f"--manifest {args.manifest}: {error.strerror}")
+        if len(fields) % 2 != 1 or fields[-1]:
+            parser.error(f"--manifest {args.manifest}: not NAME NUL PATH NUL pairs")
+        named += [(os.fsdecode(fields[i]), os.fsdecode(fields[i + 1])) for i in range(0, len(fields) - 1, 2)]
     if args.folder:
         if not os.path.isdir(args.folder):
             parser.error(f"--folder {args.folder}: not a folder")

@@ -23,7 +23,7 @@ import sys
 
 PART3 = "tutorial10_part3_gaussian"
 FILES = ["Tutorial10.cpp", "Gauss.frag", "PostProcess.frag", "PostProcessInit.frag"]
-HOSTILE_NAME = "host_b <img src=x onerror=alert(1)> &amp; \"q\" 'é'"
+HOSTILE_NAME = "host_b <img src=x onerror=alert(1)> &amp; \"q\" 'é' \udcfe\u202e"
 # Identifiers students rename (whole words), per file.
 RENAMABLE = {
     "Tutorial10.cpp": ["g_uiPostProcInitProgram", "g_uiGaussProgram", "g_uiFBOPostProc", "g_uiLuminanceKey", "g_uiBloom",
@@ -55,7 +55,7 @@ HOST_SOLUTION = """    // Blur: five rounds, each a horizontal then a vertical p
             if (!bHoriz) {
                 glBindTexture(GL_TEXTURE_2D, g_uiBlur);
             } else {
-                int iUnused = 0; // MARK
+                int iUnused = 0;
             }
             glClear(GL_COLOR_BUFFER_BIT);
             glDrawElements(GL_TRIANGLES, 6, GL_UNSIGNED_BYTE, 0);
@@ -204,15 +204,24 @@ def reformat(text, rng):
     return text
 
 
+def statement(rng, depth):
+    """One random statement of a student's own code: a declaration, an assignment or a control structure
+    (nested up to depth), in the scanner's varied tokens (types, keywords, ?:, blocks)."""
+    var = rng.choice("bcdefgh") + str(rng.randrange(99))
+    kind = rng.randrange(12 if depth else 8)
+    simple = [f"int {var} = a;", f"float {var} = 1.0f;", f"double {var} = 2.0;", f"unsigned {var} = 3u;",
+              f"const long {var} = a * 2;", "r = (a > 2) ? r : a;", "r = r + (int)sizeof(float);", f"char {var} = 'x';"]
+    if kind < 8:
+        return "    " + simple[kind]
+    body = " ".join(statement(rng, depth - 1).strip() for _ in range(rng.randint(1, 3)))
+    return "    " + [f"if (a > {rng.randrange(9)}) {{ {body} }}", f"if (r < a) {{ {body} }} else {{ r = 0; }}",
+                     f"for (int i = 0; i < a; ++i) {{ {body} }}", f"while (r > {rng.randrange(90) + 9}) {{ {body} break; }}"][kind - 8]
+
+
 def helper(rng, index):
     """A small function of the student's own: random statements."""
     lines = [f"int helper{index}(int a)", "{", "    int r = 0;"]
-    for _ in range(rng.randint(6, 12)):
-        kind = rng.randrange(6)
-        var = rng.choice("bcdefg")
-        lines.append(["    int %s = a;" % var, "    float %s = 1.0f;" % var, "    if (a > 1) { r = r + 1; }",
-                      "    for (int i = 0; i < a; ++i) { r = r + i; }", "    while (r > 100) { r = r / 2; }",
-                      "    r = r * 3;"][kind].replace("%s", var + str(rng.randrange(99))))
+    lines += [statement(rng, 2) for _ in range(rng.randint(5, 10))]
     lines += ["    return r;", "}", ""]
     return "\n".join(lines)
 
@@ -268,8 +277,11 @@ def main(argv):
     host = with_host_solution(reference)
     students["host_a"] = (disguise(host, rng), None)
     hostile = disguise(host, rng)
-    hostile["Tutorial10.cpp"] = hostile["Tutorial10.cpp"].replace("// MARK", HOSTILE_COMMENT)
-    hostile["Tutorial10.cpp"] = hostile["Tutorial10.cpp"].replace("int iUnused = 0;", "int iUnused = 0; " + HOSTILE_COMMENT)
+    # Inside the shared code, after the disguise (which may drop or reword comments and spaces).
+    marked = re.sub(r"(int iUnused\s*=\s*0;)", lambda m: m.group(1) + " " + HOSTILE_COMMENT, hostile["Tutorial10.cpp"])
+    if marked == hostile["Tutorial10.cpp"]:
+        sys.exit("make_class: the planted host code lost its iUnused line")
+    hostile["Tutorial10.cpp"] = marked
     students[HOSTILE_NAME] = (hostile, {"<b>x<i>&\"'\udcff.h": b"// a header \xff\xfe <script>\n"})
     shader = dict(reference, **{"Gauss.frag": SHADER_SOLUTION})
     students["shader_a"] = (disguise(shader, rng), None)
@@ -280,7 +292,7 @@ def main(argv):
                 "reference_copies": ["ref_copy_1", "ref_copy_2"], "typists": ["typist_1", "typist_2", "typist_3"],
                 "hostile": HOSTILE_NAME, "students": sorted(students)}
     with open(os.path.join(out, "expected.json"), "w", encoding="utf-8") as f:
-        json.dump(expected, f, indent=1, ensure_ascii=False)
+        json.dump(expected, f, indent=1)  # ASCII: the hostile name holds a byte that is not UTF-8
     print(f"make_class: {len(students)} students in {out}/")
     return 0
 
