@@ -51,7 +51,7 @@ help:
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
 	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
-	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
+	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=, SIMILARITY=1)"
 	@echo "make bench-grader  grade the grader's test batches with a fresh cache: submissions per minute, CPU s and peak memory each"
 	@echo "make grade-sweep  every fitted constant of the grader's mistake catalogue across its fit's range: named, measured within 10 %"
 	@echo "make grade-jobs-check  a fork bomb graded beside honest submissions (--jobs 2) by a non-root grader, 20 rounds: none starved"
@@ -322,8 +322,9 @@ grade-args:
 
 # The grader is built with the tests (their CPU reference): Catch2 and its sandbox, bubblewrap.
 grade check: PACKAGES += catch2 bubblewrap
-grade: grade-args build grade-deps
-	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
+# SIMILARITY=1 also compares the class (t10-grade --similarity; make similarity-deps first).
+grade: grade-args build grade-deps $(if $(SIMILARITY),similarity-deps)
+	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(if $(SIMILARITY),--similarity) $(SUBMISSIONS)
 
 # make bench-grader: what grading a class costs (grader/bench_grader.py): the grader's test batches (every
 # part's references, known mistakes, fitted parameters and broken submissions) graded with a fresh

@@ -12,6 +12,7 @@ UNFLAGGED_PAGES = 20
 MAX_PAGES = 300
 # The overview's table stops here; similarity.csv and similarity.json have every pair.
 OVERVIEW_ROWS = 200
+CONTEXT = 3  # lines shown around each shared fragment on a pair's page
 COLOURS = ["#ffe08a", "#a8e6a1", "#9fd3ff", "#f7b2d9", "#c9b8ff", "#ffc59e", "#b8f0e6", "#e0e0a0"]
 
 STYLE = ("body{font-family:sans-serif;margin:1.5em;color:#111;background:#fff}table{border-collapse:collapse}"
@@ -19,7 +20,7 @@ STYLE = ("body{font-family:sans-serif;margin:1.5em;color:#111;background:#fff}ta
          ".cols{display:grid;grid-template-columns:minmax(0,1fr) minmax(0,1fr);gap:1em}h1,h2,h3,td{overflow-wrap:anywhere}.file{margin:0 0 1em 0}"
          "pre{margin:0;font-size:12px;line-height:1.35;overflow-x:auto;border:1px solid #ccc;background:#fafafa}"
          "pre span{display:block;white-space:pre}pre b{display:inline-block;width:3.5em;color:#666;font-weight:normal;"
-         "user-select:none}.note{max-width:60em}" +
+         "user-select:none}.gap{color:#666;background:#eee;font-style:italic}.note{max-width:60em}" +
          "".join(f".m{i}{{background:{c}}}" for i, c in enumerate(COLOURS)))
 
 
@@ -38,8 +39,8 @@ def rule_text(languages, override):
     parts = []
     for name, lang in languages.items():
         if lang.q1 is None:
-            parts.append(f"{name} code {lang.threshold:.2f} (the floor: {len(lang.pairs)} pairs share anything, "
-                         "too few for quartiles)")
+            count = f"{len(lang.pairs)} pair shares" if len(lang.pairs) == 1 else f"{len(lang.pairs)} pairs share"
+            parts.append(f"{name} code {lang.threshold:.2f} (the floor: {count} anything, too few for quartiles)")
         else:
             parts.append(f"{name} code {lang.threshold:.2f} ({len(lang.pairs)} pairs share anything: Q1 "
                          f"{lang.q1:.2f}, Q3 {lang.q3:.2f})")
@@ -70,8 +71,19 @@ def line_classes(fragments, side):
 
 
 def file_block(side, rel, text, marks):
+    """One file of one side: the highlighted lines with CONTEXT lines around them; what lies between is
+    one line saying how many lines it holds."""
+    lines = text.split("\n")
+    shown_lines = {n for line in marks for n in range(line - CONTEXT, line + CONTEXT + 1) if 1 <= n <= len(lines)}
     out = [f"<div class=\"file\"><h3>{esc(rel)}</h3><pre>"]
-    for number, line in enumerate(text.split("\n"), 1):
+    skipped = 0
+    for number, line in enumerate(lines, 1):
+        if number not in shown_lines:
+            skipped += 1
+            continue
+        if skipped:
+            out.append(f"<span class=\"gap\"><b></b>({skipped} lines)</span>")
+            skipped = 0
         mark = marks.get(number)
         if mark is None:
             out.append(f"<span><b>{number}</b>{esc(line)}</span>")
@@ -79,6 +91,8 @@ def file_block(side, rel, text, marks):
             anchor = f" id=\"{side}{mark[0] + 1}\"" if mark[1] else ""
             out.append(f"<span class=\"m{mark[0] % len(COLOURS)}\"{anchor} title=\"fragment {mark[0] + 1}\">"
                        f"<b>{number}</b>{esc(line)}</span>")
+    if skipped:
+        out.append(f"<span class=\"gap\"><b></b>({skipped} lines)</span>")
     out.append("</pre></div>")
     return "".join(out)
 
@@ -104,7 +118,7 @@ def pair_page(rank, record, detail, sides, languages, override):
     return (head(title, 1) + f"<p><a href=\"../similarity.html\">All pairs to review</a></p>\n<h1>{esc(title)}</h1>\n"
             f"<p>Score {record['score']:.2f} ({similarities}); {record['matched_tokens']} shared tokens beyond the "
             f"template; {verdict}; {esc(rule_text(languages, override))}. The same colour marks the same fragment "
-            "on both sides. Nothing here was run: the files were only read.</p>\n"
+            "on both sides; the lines between fragments are left out. Nothing here was run: the files were only read.</p>\n"
             f"<table><tr><th>fragment</th><th>{esc(record['a'])}</th><th>{esc(record['b'])}</th></tr>\n"
             + "\n".join(rows) + "</table>\n<div class=\"cols\">" + side_column("a", a, record["fragments"])
             + side_column("b", b, record["fragments"]) + "</div>\n</body></html>\n")
