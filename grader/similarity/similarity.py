@@ -188,7 +188,9 @@ def stage_template(paths, work):
 
 def check_engine(engine, java):
     """The java program to run; Fault naming what to install when Java or the engine is missing."""
-    program = java or shutil.which("java")
+    program = shutil.which(java) if java else shutil.which("java")
+    if java and not program:
+        raise Fault(f"--java {java}: no such program")
     if not program:
         raise Fault("Java is not installed: make similarity-deps installs it (Debian's default-jre-headless) "
                     "and JPlag")
@@ -203,6 +205,15 @@ def check_engine(engine, java):
     return program
 
 
+def locked_version():
+    """JPlag's version in jplag.lock (what the report says when no run printed its own)."""
+    with open(LOCK, encoding="utf-8") as lock:
+        for line in lock:
+            if line.startswith("de.jplag:jplag:"):
+                return line.split()[0].split(":")[2]
+    return ""
+
+
 def run_engine(java, engine, work, language, no_template):
     """Runs JPlagPairs over work/<language>/; returns the lines of its output, split on tabs."""
     out = os.path.join(work, f"{language}.tsv")
@@ -212,6 +223,8 @@ def run_engine(java, engine, work, language, no_template):
     command = [java, "-cp", os.path.join(engine, "lib", "*"), DRIVER, "cpp", os.path.join(work, language), base,
                ",".join(LANGUAGES[language]), str(MIN_MATCH), out]
     result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, errors="replace")
+    if result.returncode != 0 and "Not enough valid submissions" in result.stderr:
+        return []  # fewer than two submissions with a block of 12 tokens in this language: nothing to pair
     if result.returncode != 0:
         tail = "\n".join(result.stderr.strip().splitlines()[-5:])
         raise Fault(f"JPlag failed on the {language} code (exit {result.returncode}): {tail}")
@@ -403,7 +416,7 @@ def main(argv):
                     languages[language] = Language(language, run_engine(java, args.engine, work, language,
                                                                          args.no_template), by_id)
         pairs = build_pairs(languages, by_id, args.threshold)
-        version = next((lang.version for lang in languages.values()), "")
+        version = next((lang.version for lang in languages.values() if lang.version), locked_version())
         result = {"engine": "JPlag", "version": version, "template": template, "pairs": [p[0] for p in pairs]}
         write_atomically(os.path.join(args.report, "similarity.json"), json.dumps(result, indent=1, ensure_ascii=False) + "\n")
         pages_of = pages.write_pages(write_atomically, args.report, pairs, languages, submissions, args.threshold, template, args.part)
