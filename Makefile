@@ -248,8 +248,8 @@ test-asan: PACKAGES += $(TEST_PACKAGES)
 test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
-	@# The grader's tests run here too: FLIP into this build's own venv (else they skip, saying why).
-	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv
+	@# The grader's tests run here too: FLIP into this build's own venv and JPlag beside it (else they skip, saying why).
+	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv SIMILARITY_ENGINE=build-asan/jplag
 	cd build-asan && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 # `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
