@@ -191,7 +191,7 @@ web: deps
 web-serve:
 	@[ -d $(OUT)/web ] || { echo "make web-serve: $(OUT)/web/ does not exist: run make web first"; exit 2; }
 	@echo "Serving $(OUT)/web on http://127.0.0.1:$(WEB_PORT)/ (e.g. /tutorial10_part3_gaussian/; Ctrl-C stops)"
-	@exec python3 tools/web/web_page.py --serve $(OUT)/web --port $(WEB_PORT)
+	@PYTHONPATH=$(CURDIR)/tools exec python3 -m web.web_page --serve $(OUT)/web --port $(WEB_PORT)
 
 # The documentation site (site/): built by Debian's jekyll into build/site/; site-serve serves it on
 # http://127.0.0.1:$(SITE_PORT)/ (loopback only; Ctrl-C stops it).
@@ -248,8 +248,11 @@ test-asan: PACKAGES += $(TEST_PACKAGES)
 test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
-	@# The grader's tests run here too: FLIP into this build's own venv and JPlag beside it (else they skip, saying why).
-	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv SIMILARITY_ENGINE=build-asan/jplag
+	@# The grader's tests run here too: FLIP into this build's own venv and JPlag beside it (else they skip, saying why), made
+	@# with Debian's interpreter where there is one, which every user may run: the as-user fork-bomb test
+	@# skips with a venv of a Python under a 0700 home (pyenv's under /root), and this suite skips none.
+	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv \
+	    GRADE_PYTHON=$(firstword $(wildcard /usr/bin/python3) python3) SIMILARITY_ENGINE=build-asan/jplag
 	cd build-asan && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 # `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
@@ -388,7 +391,7 @@ similarity: similarity-deps
 	    $(if $(SIMILARITY_THRESHOLD),--threshold $(SIMILARITY_THRESHOLD)) \
 	    $(if $(SUBMISSIONS_DIR),--folder "$(SUBMISSIONS_DIR)") $(SUBMISSIONS)
 
-# Students (tools/check/): `make student PART=N` starts student/partN/ (Part 1 from
+# Students (tools/student/): `make student PART=N` starts student/partN/ (Part 1 from
 # tutorial10_part0_start/, Part N from the student's own part(N-1) or else the reference of Part N-1);
 # the build finds student/*/ (cmake/T10Student.cmake) and builds each only when asked, as
 # build/bin/student_<folder>; `make check PART=N [DIR=folder]` builds it, grades it against Part N and
@@ -401,7 +404,7 @@ COMPILER_MESSAGES := sed -e '/^FAILED: /{N;d;}' -e '/^\[[0-9]*\/[0-9]*\] /d' -e 
 CHECK_REPORT := $(BUILD)/check
 .PHONY: student check check-args run-stage
 student:
-	@python3 tools/check/new_student.py --part "$(PART)" --student-dir "$(STUDENT_DIR)" --source-root "$(CURDIR)"
+	@python3 tools/student/new_student.py --part "$(PART)" --student-dir "$(STUDENT_DIR)" --source-root "$(CURDIR)"
 
 check-args:
 	@case "$(PART)" in 1|2|3) ;; *) echo 'usage: make check PART=1|2|3 [DIR=folder]   (make student PART=N creates the folder)'; exit 2 ;; esac
@@ -409,7 +412,7 @@ check-args:
 	    echo "make check: $$dir/: no such folder (make student PART=$(PART) creates $(STUDENT_DIR)/part$(PART)/)"; exit 2; }
 
 # ISOLATION=none grades without the sandbox, for a student's own code on a machine that refuses it
-# (a container started with Docker's defaults: tools/check/check.sh says so and what to do).
+# (a container started with Docker's defaults: tools/student/check.sh says so and what to do).
 ISOLATION ?=
 # The student's program is built by its own target first (when the build has found the folder), so that
 # a compile error shows with the project's flags and names the file and line; then t10-grade grades it.
@@ -422,7 +425,7 @@ check: check-args build grade-deps
 	        echo "make check: $$dir/ does not build: fix the first error above (file:line), then make check PART=$(PART) again"; \
 	        echo "(the compiler's whole output: $(BUILD)/student-build.log)"; exit 1; }; \
 	fi; \
-	tools/check/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir" $(ISOLATION)
+	tools/student/check.sh $(BIN)/t10-grade $(PART) $(CHECK_REPORT)/part$(PART) "$$dir" $(ISOLATION)
 
 # make run STAGE=name: one stage, reference or student, in a window or headless into $(OUT)/name.png.
 run-stage:

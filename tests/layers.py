@@ -27,20 +27,26 @@ usage: layers.py --grader GRADER_DIR COMMON_DIR
 checks the grader the same way: its folders are the stages of its pipeline, and a file may include
 the headers of common/ (as above) and those of its own stage and the stages before it:
 
-    isolation, intake, diagnosis      (nothing of the grader below them)
-    build     isolation, intake       (a submission's host code compiled in the sandbox, cached)
-    capture   build, isolation, intake            (a case rendered in the sandbox; its outputs examined)
-    checks    diagnosis, isolation    (render results checked, FLIP run as a limited process; mistakes named)
-    scoring   checks, diagnosis
-    report    scoring, checks, diagnosis, intake    (report.json, report.html, gradebook, class index)
+    isolation, intake, diagnosis, part (nothing of the grader below them)
+    compile   isolation, intake       (a submission's host code compiled in the sandbox, cached)
+    capture   compile, isolation, intake          (a case rendered in the sandbox; its outputs examined)
+    checks    diagnosis, part, isolation (render results checked, FLIP run as a limited process; mistakes named)
+    scoring   checks, diagnosis, part
+    report    scoring, checks, diagnosis, part, intake (report.json, report.html, gradebook, class index)
     platforms report and what it may include          (the platforms' result files)
     tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
     similarity  report                (--similarity: JPlag run over the class, the index's section)
     cli       every stage             (the command line on top)
-    tests     nothing of the grader
+    tests     the checks' core (checks, diagnosis, part), never what is around it (and GRADER_TEST_HEADERS)
 
 A grader header is known by its path below the grader folder (`checks/checks.hpp`). No two grader
 files may need each other.
+
+The checks' core (checks/, diagnosis/ and part/ but for the files around it: GRADER_CORE_ADAPTERS)
+runs on buffers in memory, so that a page can compile it: it includes no system header of the file
+system, processes or POSIX (GRADER_CORE_SYSTEM_BANNED), no header of common/ that reads or writes files
+(GRADER_CORE_COMMON_BANNED), and of the grader only the core's own headers. No file of the grader is
+over GRADER_MAX_LINES lines.
 """
 import pathlib
 import re
@@ -86,23 +92,36 @@ def code_files(common):
 
 
 # The grader's stages and the stages each may include (itself included).
-REPORT_STAGES = {"report", "scoring", "checks", "diagnosis", "intake"}
+REPORT_STAGES = {"report", "scoring", "checks", "diagnosis", "part", "intake"}
 GRADER_ALLOWED = {
     "isolation": {"isolation"},
     "intake": {"intake"},
     "diagnosis": {"diagnosis"},
-    "build": {"build", "isolation", "intake"},
-    "capture": {"capture", "build", "isolation", "intake"},
-    "checks": {"checks", "diagnosis", "isolation"},
-    "scoring": {"scoring", "checks", "diagnosis"},
+    "part": {"part"},
+    "compile": {"compile", "isolation", "intake"},
+    "capture": {"capture", "compile", "isolation", "intake"},
+    "checks": {"checks", "diagnosis", "part", "isolation"},
+    "scoring": {"scoring", "checks", "diagnosis", "part"},
     "report": REPORT_STAGES,
     "platforms": REPORT_STAGES | {"platforms"},
     "tga": {"tga", "isolation", "intake"},
     "similarity": {"similarity", "report"},
-    "cli": {"cli", "isolation", "intake", "build", "capture", "checks", "diagnosis", "scoring", "report", "platforms",
+    "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "part", "scoring", "report", "platforms",
             "similarity"},
-    "tests": {"tests"},
+    "tests": {"tests", "checks", "diagnosis", "part"},
 }
+
+# The checks' core: these stages but for the units around them (a dump folder read, the catalogue's
+# file, FLIP run as a process).
+GRADER_CORE_STAGES = {"checks", "diagnosis", "part"}
+GRADER_CORE_ADAPTERS = {"checks/dump_files", "checks/flip", "diagnosis/catalogue_file"}
+GRADER_CORE_SYSTEM_BANNED = {"filesystem", "fstream", "cstdio", "stdio.h", "unistd.h", "fcntl.h", "dirent.h", "spawn.h",
+                             "signal.h", "csignal", "thread", "future", "sys/"}
+GRADER_CORE_COMMON_BANNED = {"t10/image_io.hpp", "t10/file.hpp", "t10/json.hpp", "t10/outputs.hpp"}
+SYSTEM_INCLUDE = re.compile(r'^\s*#\s*include\s+<([^>]+)>')
+GRADER_MAX_LINES = 700
+# What the grader's tests include besides the core: the tests' Catch2 header and the catalogue compiled in.
+GRADER_TEST_HEADERS = {"t10_catch.hpp", "mistakes_tsv.inc"}
 
 
 def find_cycle(graph):
@@ -145,6 +164,20 @@ def verdict(problems, graph, counted, fine):
     return 1 if problems else 0
 
 
+def core_include_problems(path, number, line):
+    """The problem of one line of a file of the checks' core, if it includes a header of files or processes."""
+    system = SYSTEM_INCLUDE.match(line)
+    if system and any(system.group(1) == banned or (banned.endswith("/") and system.group(1).startswith(banned))
+                      for banned in GRADER_CORE_SYSTEM_BANNED):
+        return [f"{path}:{number}: includes <{system.group(1)}>: the checks' core runs on buffers in memory, without "
+                "the file system or processes (move the file's part that needs it into an adapter)"]
+    project = INCLUDE.match(line)
+    if project and project.group(1) in GRADER_CORE_COMMON_BANNED:
+        return [f"{path}:{number}: includes \"{project.group(1)}\", which reads or writes files: the checks' core runs on "
+                "buffers in memory"]
+    return []
+
+
 def check_grader(grader, common):
     """The problems of the grader's includes (see the module's docstring)."""
     common_headers = {include_name(common, layer, path) for layer, path in code_files(common)
@@ -161,12 +194,14 @@ def check_grader(grader, common):
                             "give its folder a rule in tests/layers.py")
             continue
         unit = path.relative_to(grader).with_suffix("").as_posix()
+        core = stage in GRADER_CORE_STAGES and unit not in GRADER_CORE_ADAPTERS
         for number, line in enumerate(path.read_text().splitlines(), 1):
+            problems += core_include_problems(path, number, line) if core else []
             match = INCLUDE.match(line)
             if not match:
                 continue
             target = match.group(1)
-            if target in common_headers or target == "glad/gl.h":
+            if target in common_headers or target == "glad/gl.h" or (stage == "tests" and target in GRADER_TEST_HEADERS):
                 continue
             if target not in owner:
                 problems.append(f"{path}:{number}: includes \"{target}\", which is neither a header of common/ nor "
@@ -174,10 +209,20 @@ def check_grader(grader, common):
                 continue
             if owner[target] not in GRADER_ALLOWED[stage]:
                 problems.append(f"{path}:{number}: includes \"{target}\" of {owner[target]}, a stage {stage} may not include")
+            elif (core or stage == "tests") and (owner[target] not in GRADER_CORE_STAGES or
+                                                 target.rsplit(".", 1)[0] in GRADER_CORE_ADAPTERS):
+                problems.append(f"{path}:{number}: includes \"{target}\", which is not the checks' core: the core runs on "
+                                "buffers in memory (see GRADER_CORE_ADAPTERS)")
             other = pathlib.PurePosixPath(target).with_suffix("").as_posix()
             if other != unit:
                 graph.setdefault(unit, set()).add(other)
-    return verdict(problems, graph, f"{len(files)} files in the stages of {grader}", "stages respected, no cycle")
+    for path in sorted(grader.rglob("*")):
+        if path.is_file():
+            lines = len(path.read_bytes().splitlines())
+            if lines > GRADER_MAX_LINES:
+                problems.append(f"{path}: {lines} lines, over {GRADER_MAX_LINES}: split it along its seams")
+    return verdict(problems, graph, f"{len(files)} files in the stages of {grader}",
+                   f"stages respected, no cycle, the checks' core free of files and processes, no file over {GRADER_MAX_LINES} lines")
 
 
 def main():

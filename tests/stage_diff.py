@@ -18,13 +18,11 @@ Prints every offending line with its file and line number, and exits 1 if there 
 """
 import collections
 import difflib
-import os
 import pathlib
 import sys
 
-# The one step-marker parser, shared with the site.
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools", "markers"))
-import markers  # noqa: E402
+# The one step-marker parser, shared with the site (tools/ on PYTHONPATH).
+from markers import markers
 
 ALLOWED = {".cpp", ".vert", ".frag", ".geom", ".comp", ".tesc", ".tese"}
 

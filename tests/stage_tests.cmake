@@ -21,7 +21,7 @@ function(t10_add_stage_tests stage)
     if(ARG_AFTER)
         list(JOIN ARG_STEPS "-" range)
         add_test(NAME "stage diff: ${ARG_AFTER} -> ${stage} holds only steps ${range}"
-                 COMMAND ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${ARG_AFTER}
+                 COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF} ${PROJECT_SOURCE_DIR}/${ARG_AFTER}
                          ${PROJECT_SOURCE_DIR}/${stage} ${ARG_STEPS})
     endif()
     if(ARG_SAME_GOLDEN_AS)
@@ -51,14 +51,14 @@ if(TARGET extras)
 endif()
 # The check can fail: Part 2 measured against Part 1's step range holds steps 17-25 too many.
 add_test(NAME "stage diff: rejects steps of another part"
-         COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+         COMMAND ${EXPECT} 1 "not part of steps 1-16" -- ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${PROJECT_SOURCE_DIR}/tutorial10_part0_start ${PROJECT_SOURCE_DIR}/tutorial10_part2_bloom 1 16)
 
 # A malformed marker is a problem too (the parser is tools/markers, shared with the site).
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old/Tutorial10.cpp "int a;\n")
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new/Tutorial10.cpp "int a;\n// [step 1] b\nint b;\n")
 add_test(NAME "stage diff: rejects a step block that is never closed"
-         COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${Python3_EXECUTABLE} ${STAGE_DIFF}
+         COMMAND ${EXPECT} 1 "\\[step 1\\] is never closed" -- ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${STAGE_DIFF}
                  ${CMAKE_CURRENT_BINARY_DIR}/marker_check/old ${CMAKE_CURRENT_BINARY_DIR}/marker_check/new 1 1)
 
 # --- make help names every target of the Makefile and every `make NAME` of the README. ----------
@@ -122,13 +122,32 @@ function(t10_add_grader_layer_mutant name file line regex)
 endfunction()
 t10_add_grader_layer_mutant("checks that include the report" checks/checks.hpp "#include \"report/report.hpp\""
                             "checks.hpp:1: includes \"report/report.hpp\" of report, a stage checks may not include")
-t10_add_grader_layer_mutant("code that includes a test's header" checks/checks.cpp "#include \"dumps.hpp\""
-                            "checks.cpp:1: includes \"dumps.hpp\", which is neither a header of common/ nor of the grader")
+t10_add_grader_layer_mutant("code that includes a test's header" checks/table.cpp "#include \"dumps.hpp\""
+                            "table.cpp:1: includes \"dumps.hpp\", which is neither a header of common/ nor of the grader")
 t10_add_grader_layer_mutant("a report that includes a platform's format" report/class_index.cpp
                             "#include \"platforms/formats.hpp\""
                             "class_index.cpp:1: includes \"platforms/formats.hpp\" of platforms, a stage report may not include")
-t10_add_grader_layer_mutant("a build that includes the capture after it" build/build.cpp "#include \"capture/capture.hpp\""
-                            "build.cpp:1: includes \"capture/capture.hpp\" of capture, a stage build may not include")
+t10_add_grader_layer_mutant("a compile that includes the capture after it" compile/build.cpp "#include \"capture/capture.hpp\""
+                            "build.cpp:1: includes \"capture/capture.hpp\" of capture, a stage compile may not include")
+# The checks' core (checks/, diagnosis/, part/ but for the dump reader, the catalogue's file and FLIP)
+# runs on buffers in memory, for a page to compile (issue 49): a header of files or processes in it, or
+# its include of an adapter, is reported; so is a grader file over 700 lines (table.cpp with 300 more).
+t10_add_grader_layer_mutant("a core that includes <filesystem>" checks/table.cpp "#include <filesystem>"
+                            "table.cpp:1: includes <filesystem>: the checks' core runs on buffers in memory")
+t10_add_grader_layer_mutant("a core that includes the dump reader" checks/reconcile.cpp "#include \"checks/dump_files.hpp\""
+                            "reconcile.cpp:1: includes \"checks/dump_files.hpp\", which is not the checks' core")
+string(REPEAT "//\n" 300 many_lines)
+t10_add_grader_layer_mutant("a file over 700 lines" checks/table.cpp "${many_lines}" "table.cpp: [0-9]+ lines, over 700")
+
+# --- The facts of each part (its stage, its steps, its golden): grader/part/part.cpp describes them for
+# the grader; the CMake, Python and shell that cannot include it are held to it (tests/part_facts.py).
+# Shown to fail with Gradescope's setup.sh grading Part 2 against Part 3's stage.
+set(PART_FACTS ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/part_facts.py ${PROJECT_SOURCE_DIR})
+add_test(NAME "part facts: every copy agrees with the grader's part description"
+         COMMAND ${EXPECT} 0 "they agree" -- ${PART_FACTS})
+add_test(NAME "part facts: rejects a copy that disagrees"
+         COMMAND ${EXPECT} 1 "setup.sh: the case of .T10_PART: .*'2': 'tutorial10_part3_gaussian'.*where grader/part/part.cpp says" -- ${PART_FACTS}
+                 --replace grader/platforms/gradescope/setup.sh "2) stage=tutorial10_part2_bloom" "2) stage=tutorial10_part3_gaussian")
 
 # --- Function length: no function over 120 lines outside stage files and data generators. --------
 set(FUNCTION_LENGTH ${CMAKE_CURRENT_SOURCE_DIR}/function_length.py)

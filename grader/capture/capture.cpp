@@ -110,7 +110,7 @@ std::vector<std::string> caseArgv(const SandboxRun& run, const CaseRender& rende
     for (const std::string& a : caseArgs(render.args, run.path("/t10/inputs"))) argv.push_back(a);
     argv.insert(argv.end(), {"--shader-dir", run.path(shaderDir), "--dump", run.path(outDir), "--output",
                              run.path(outDir + "/frame.png")});
-    // Part 3: each blur pass as it is drawn (checks.cpp's blur-passes and blur-pass-count).
+    // Part 3: each blur pass as it is drawn (checks/table.cpp's blur-passes and blur-pass-count).
     if (capturePasses) argv.insert(argv.end(), {"--capture-passes", run.path(outDir)});
     return argv;
 }

@@ -3,6 +3,7 @@
 #include "checks/flip.hpp"
 
 #include "isolation/run_limited.hpp"
+#include "part/part.hpp"
 
 #include "t10/error.hpp"
 
@@ -18,7 +19,7 @@ Check flipCheck(int part, const CaseRun& run, const std::string& referenceFrame,
                 const std::string& reportDir, const std::vector<Check>& caseChecks) {
     Check check;
     check.id = run.id + ".flip";
-    check.steps = partSteps(part);
+    check.steps = partInfo(part).steps;
     const fs::path images = fs::path(reportDir) / "images";
     fs::create_directories(images);
     const std::string base = check.id + ".flip";

@@ -2,7 +2,8 @@
 // same case, measured with FLIP (the flip-evaluator in the grader's venv, run as a limited process).
 // The buffer checks (checks.hpp) say which pass is wrong; this one says whether the picture is.
 #pragma once
-#include "checks/checks.hpp"
+#include "checks/buffers.hpp"
+#include "checks/check.hpp"
 
 #include <string>
 #include <vector>

@@ -14,12 +14,15 @@
 // report.html (and the platforms' results of --format, formats.hpp), DIR/gradebook.csv, and the class
 // index DIR/index.html with DIR/grades-lms.csv (class_index.hpp). Exit 0 when every submission got a
 // report, 1 when the grader failed, 2 on bad usage.
-#include "build/build.hpp"
+#include "compile/build.hpp"
 #include "cli/command_line.hpp"
 #include "capture/capture.hpp"
 #include "capture/cases.hpp"
 #include "checks/checks.hpp"
+#include "checks/dump_files.hpp"
 #include "checks/flip.hpp"
+#include "part/part.hpp"
+#include "report/check_images.hpp"
 #include "report/class_index.hpp"
 #include "platforms/formats.hpp"
 #include "report/output.hpp"
@@ -61,26 +64,10 @@ using t10::errorLine;
 using t10::UsageError;
 using namespace t10::grade;
 
-struct PartInfo {
-    const char* stage;
-    std::vector<std::string> shaders;
-};
-
-PartInfo partInfo(int part) {
-    switch (part) {
-    case 1: return {"tutorial10_part1_tonemap", {"PostProcess.frag", "PostProcessInit.frag"}};
-    case 2: return {"tutorial10_part2_bloom", {"PostProcess.frag", "PostProcessInit.frag"}};
-    default: return {"tutorial10_part3_gaussian", {"PostProcess.frag", "PostProcessInit.frag", "Gauss.frag"}};
-    }
-}
-
-// The files of a part, and those its steps ask the student to change (the stage diffs: Part 3 leaves
-// PostProcess.frag and PostProcessInit.frag as Part 2 has them).
-PartFiles partFiles(int part) {
-    PartFiles files{{"Tutorial10.cpp"}, {"Tutorial10.cpp"}};
-    for (const std::string& shader : partInfo(part).shaders) files.expected.push_back(shader);
-    if (part == 3) files.asked.push_back("Gauss.frag");
-    else files.asked.insert(files.asked.end(), {"PostProcess.frag", "PostProcessInit.frag"});
+// The files of a part, and those its steps ask the student to change.
+PartFiles partFiles(const Part& part) {
+    PartFiles files{{"Tutorial10.cpp"}, part.asked};
+    for (const std::string& shader : part.shaders) files.expected.push_back(shader);
     return files;
 }
 
@@ -145,7 +132,7 @@ private:
     void score(const std::vector<CaseRun>& runs, const Job& job, Report& report) const;
 
     Config config_;
-    PartInfo info_;
+    const Part& info_;
     PartFiles files_;
     HostKit kit_;
     std::string referenceBinary_;
@@ -159,7 +146,7 @@ private:
     std::vector<Mount> projectMounts_; // headers, libraries, common shaders and assets, read-only
 };
 
-Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(config_.part)), files_(partFiles(config_.part)),
+Grader::Grader(Config config) : config_(std::move(config)), info_(partInfo(config_.part)), files_(partFiles(info_)),
                                 kit_(loadHostKit()) {
     if (!fs::exists(T10_GRADE_FLIP)) {
         throw Error(std::string(T10_GRADE_FLIP) + ": FLIP (the perceptual image metric) is not installed; run "
@@ -394,9 +381,9 @@ bool Grader::captureCases(const Job& job, const fs::path& program, Report& repor
                              (fault.rfind("it ", 0) == 0 ? fault.substr(3) : "its output is unusable: " + fault);
             return false;
         }
-        runs.push_back(CaseRun{spec.id, spec.description, spec.camera, t10::test::Dump{}});
+        runs.push_back(CaseRun{spec.id, spec.description, spec.camera, CaseBuffers{}});
         try {
-            runs.back().dump = loadDumpDir(dir.string());
+            runs.back().buffers = loadCaseBuffers(dir.string());
         } catch (const Error& error) {
             report.status = Status::Crashed;
             report.message = "case " + spec.id + ": the program exited 0 but wrote no readable output: " + error.what();
@@ -409,12 +396,13 @@ bool Grader::captureCases(const Job& job, const fs::path& program, Report& repor
 std::vector<Check> Grader::checkCase(const CaseSpec& spec, const CaseRun& run, const Job& job) const {
     std::vector<Check> checks;
     try {
-        checks = bufferChecks(config_.part, run, job.out.string(), (job.out / "images").string());
+        ReportImages images(job.out.string(), (job.out / "images").string());
+        checks = bufferChecks(config_.part, run, images);
     } catch (const Error& error) {
         // A buffer the part must write is missing or malformed: one failed check says which.
         Check check;
         check.id = run.id + ".buffers";
-        check.steps = partSteps(config_.part);
+        check.steps = info_.steps;
         check.measured = error.what();
         check.tolerance = "every texture of the part is on its unit (15, 16, 17) with its full size and levels";
         check.diagnosis = "the stage does not write the buffers of this part where the tutorial puts them";
@@ -433,7 +421,7 @@ std::vector<Check> Grader::checkCase(const CaseSpec& spec, const CaseRun& run, c
                 if (!c.passed) ids += (ids.empty() ? "" : ", ") + c.id;
             flip.diagnosis = "follows from " + ids + " (the frame shows what they diagnose)";
         }
-        else if (!flip.passed) flip.blame = frameSteps(config_.part);
+        else if (!flip.passed) flip.blame = info_.frameSteps;
         checks.push_back(flip);
     }
     return checks;

@@ -1,11 +1,9 @@
-// Reading the mistake catalogue; see catalogue.hpp.
+// Parsing the mistake catalogue and looking mistakes up; see catalogue.hpp. Reading it from its file
+// is catalogue_file.cpp's.
 #include "diagnosis/catalogue.hpp"
 
 #include "t10/error.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 
 namespace t10::grade {
@@ -19,9 +17,9 @@ std::vector<std::string> split(const std::string& line, char separator) {
     return fields;
 }
 
-std::vector<Mistake> load(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw Error(path + ": cannot open the mistake catalogue: " + std::strerror(errno));
+} // namespace
+
+std::vector<Mistake> parseCatalogue(std::istream& in, const std::string& path) {
     std::vector<Mistake> table;
     int number = 0;
     for (std::string line; std::getline(in, line);) {
@@ -50,17 +48,10 @@ std::vector<Mistake> load(const std::string& path) {
     return table;
 }
 
-} // namespace
-
-const std::vector<Mistake>& catalogue() {
-    static const std::vector<Mistake> table = load(T10_GRADE_MISTAKES);
-    return table;
-}
-
 const Mistake& mistake(const std::string& id) {
     for (const Mistake& m : catalogue())
         if (m.id == id) return m;
-    throw Error(std::string(T10_GRADE_MISTAKES) + ": no mistake '" + id + "' (the grader names it)");
+    throw Error(catalogueName() + ": no mistake '" + id + "' (the grader names it)");
 }
 
 } // namespace t10::grade

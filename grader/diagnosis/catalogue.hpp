@@ -1,6 +1,7 @@
 // The mistake catalogue of t10-grade, read from grader/diagnosis/mistakes.tsv (the one table the grader,
 // its tests and the instructors' page share), and the findings a check reports from it.
 #pragma once
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,13 @@ struct Finding {
     bool loose = false;
 };
 
-// Loads the table once (T10_GRADE_MISTAKES); throws t10::Error naming the file and line on a fault.
+// The table, loaded once: catalogue_file.cpp reads the file T10_GRADE_MISTAKES, throwing t10::Error
+// naming the file and line on a fault (a page would parse the text it was given). catalogueName names
+// where it came from in messages.
 const std::vector<Mistake>& catalogue();
+const std::string& catalogueName();
+// Parses the table's text (mistakes.tsv's format); `name` and the line number name a fault.
+std::vector<Mistake> parseCatalogue(std::istream& in, const std::string& name);
 // The entry `id`; throws t10::Error for an id the table lacks (a grader bug, not a student's).
 const Mistake& mistake(const std::string& id);
 

@@ -2,6 +2,7 @@
 #include "report/class_index.hpp"
 
 #include "report/output.hpp"
+#include "part/part.hpp"
 #include "t10/error.hpp"
 #include "t10/json.hpp"
 
@@ -137,7 +138,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
         ++statuses[statusName(r->status)];
     }
     const int most = std::max(1, *std::max_element(std::begin(bins), std::end(bins)));
-    const std::vector<int> steps = partSteps(part);
+    const std::vector<int> steps = partInfo(part).steps;
 
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Tutorial 10 Part " << part

@@ -1,7 +1,7 @@
 // What t10-grade writes for each submission (report.json, report.html) and for the class
 // (gradebook.csv), and how the score is computed.
 #pragma once
-#include "checks/checks.hpp"
+#include "checks/check.hpp"
 #include "report/status.hpp"
 #include "scoring/rubric.hpp"
 #include "scoring/score.hpp"

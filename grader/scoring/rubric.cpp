@@ -1,7 +1,7 @@
 // Reading the rubric; see rubric.hpp.
 #include "scoring/rubric.hpp"
 
-#include "checks/checks.hpp"
+#include "part/part.hpp"
 #include "t10/error.hpp"
 
 #include <algorithm>
@@ -54,7 +54,7 @@ Rubric loadRubric(int part) {
     }
     Rubric rubric;
     double total = 0.0;
-    for (int step : partSteps(part)) {
+    for (int step : partInfo(part).steps) {
         const auto at = listed.find(step);
         rubric[step] = at == listed.end() ? fallback : at->second;
         total += rubric[step];
@@ -65,7 +65,7 @@ Rubric loadRubric(int part) {
 
 std::map<int, int> wholePoints(const Rubric& listed, int part) {
     Rubric rubric;
-    for (int step : partSteps(part)) {
+    for (int step : partInfo(part).steps) {
         const auto at = listed.find(step);
         rubric[step] = at == listed.end() ? 1.0 : at->second;
     }

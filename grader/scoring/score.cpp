@@ -1,6 +1,8 @@
 // The score and its split over the steps; see score.hpp.
 #include "scoring/score.hpp"
 
+#include "part/part.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -31,7 +33,7 @@ std::vector<StepResult> stepResults(const Scored& scored) {
     const int target = score(scored);
     std::vector<StepResult> out;
     int earned = 0;
-    for (int step : partSteps(scored.part)) {
+    for (int step : partInfo(scored.part).steps) {
         StepResult s;
         s.step = step;
         for (const Check& c : scored.checks) {

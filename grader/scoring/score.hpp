@@ -2,7 +2,7 @@
 // Report::score() and every platform's per-step tests (platforms/formats.cpp, report/class_index.cpp)
 // read it from here, so the number a student sees and the points of the steps add up to each other.
 #pragma once
-#include "checks/checks.hpp"
+#include "checks/check.hpp"
 #include "scoring/rubric.hpp"
 
 #include <string>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The grader's builds use the precompiled t10/app.hpp (grader/CMakeLists.txt, build/build.cpp).
+"""The grader's builds use the precompiled t10/app.hpp (grader/CMakeLists.txt, compile/build.cpp).
 
 usage: precompiled_check.py HOST_KIT SOURCE_DIR CACHE_BUILDS
 1. The kit's own compile of Part 3's Tutorial10.cpp (its compiler, flags, include folders and

@@ -36,7 +36,7 @@ def glsl(value):
 
 # One row per fitted parameter and place: (label, catalogue id, parameter, part, file, old text, new text
 # with {v} for the value, the spread, the near values). The spreads cover each fit's search range
-# (checks.cpp: kLogLuminanceParameters, kFrameParameters, kBlurParameters; the weights' least squares;
+# (grader/diagnosis/: kLogLuminanceParameters, kFrameParameters, kBlurParameters; the weights' least squares;
 # the threshold's luminance interval; the key level's mip levels; the pass count's capture).
 WEIGHTS = "vec3(0.2126f, 0.7152f, 0.0722f)"
 EPSILON = "const float fEpsilon = 0.00000001f;"

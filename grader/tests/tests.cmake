@@ -25,6 +25,18 @@ set(GRADE_TIMEOUT 20)
 # wait GRADE_TIMEOUT for it, the loop spinning a CPU all the while). It loops whatever the load.
 set(GRADE_LOOP_TIMEOUT 3)
 
+# The checks' core on buffers made in memory (core/test_core_in_memory.cpp), linked with the core alone:
+# a page's readback would run the same checks. Each case says how it fails.
+# It gives the core the catalogue compiled in, as a page would: mistakes.tsv as a string literal.
+set(core_test_dir ${CMAKE_CURRENT_BINARY_DIR}/core_test)
+file(READ ${CMAKE_CURRENT_SOURCE_DIR}/diagnosis/mistakes.tsv mistakes_text)
+file(WRITE ${core_test_dir}/mistakes_tsv.inc "R\"tsv(${mistakes_text})tsv\"\n")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/diagnosis/mistakes.tsv)
+add_executable(t10_grade_core_tests ${GRADE_TESTS}/core/test_core_in_memory.cpp)
+target_include_directories(t10_grade_core_tests PRIVATE ${core_test_dir})
+target_link_libraries(t10_grade_core_tests PRIVATE t10_grade_core t10_flags t10_catch)
+catch_discover_tests(t10_grade_core_tests TEST_PREFIX "grade core: ")
+
 add_test(NAME "grade: write the test submissions"
          COMMAND ${Python3_EXECUTABLE} ${GRADE_TESTS}/make_submissions.py ${PROJECT_SOURCE_DIR} ${GRADE_SUBMISSIONS})
 set_tests_properties("grade: write the test submissions" PROPERTIES FIXTURES_SETUP grade_submissions)
@@ -85,8 +97,10 @@ set_tests_properties("grade: an endless loop is stopped at the time limit" PROPE
                      FIXTURES_SETUP grade_loop FIXTURES_REQUIRED "grade_submissions;grade_part3" SKIP_RETURN_CODE 77)
 add_test(NAME "grade: the endless loop's report says timeout"
          COMMAND ${GRADE_CHECK} reports ${GRADE_REPORTS}/loop loop crash_npot loop_npot)
+# crash_npot's null store is UBSan's report and exit 1 in a sanitized build, as the batches' crash is.
 set_tests_properties("grade: the endless loop's report says timeout" PROPERTIES FIXTURES_REQUIRED grade_loop
-                     SKIP_RETURN_CODE 77 ENVIRONMENT "T10_GRADE_LOOP_TIMEOUT=${GRADE_LOOP_TIMEOUT}")
+                     SKIP_RETURN_CODE 77
+                     ENVIRONMENT "T10_GRADE_LOOP_TIMEOUT=${GRADE_LOOP_TIMEOUT};T10_GRADE_SANITIZED=${GRADE_SANITIZED}")
 
 # --- Fitted parameters (issue 20): every parameter of the catalogue at two values the batch above
 # does not use, named with its value measured within 10 %, and mistakes outside the catalogue, which

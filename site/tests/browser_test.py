@@ -34,8 +34,7 @@ import sys
 import time
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
-import cdp  # noqa: E402  (the DevTools client: Browser, the local server, evaluate, screenshots)
+from web import cdp  # noqa: E402  (the DevTools client: Browser, the local server, evaluate, screenshots)
 
 Failure = cdp.Failure
 

@@ -17,7 +17,6 @@ import shutil
 import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import browser_test  # noqa: E402
 
 EXPECTED = ["image not loaded", "KaTeX did not run", "numbers shown in front of the steps",

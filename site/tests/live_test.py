@@ -32,9 +32,8 @@ import sys
 import time
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "web"))
-import cdp  # noqa: E402  (the DevTools client)
-from cdp import Failure, evaluate, screenshot  # noqa: E402
+from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
+from web.cdp import Failure, evaluate, screenshot  # noqa: E402
 
 # WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer (no
 # EXT_texture_norm16: the pages emulate GL_R16). The goldens' rasteriser, llvmpipe, is the web tests'.

@@ -2,12 +2,10 @@
 """A nested step's code folds into one '... step N: title' line that ends a sentence: a marker title
 wrapped mid-sentence is read on into the next comment line, and a short title is kept as it is.
 Exit 0 when both hold, 1 (naming the line) when not."""
-import os
 import sys
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools", "markers"))
-import markers  # noqa: E402
+from markers import markers  # noqa: E402  (tools/ on PYTHONPATH)
 
 SOURCE = """\
 // [step 1] Outer

@@ -1,7 +1,9 @@
 // The translator's output in the compiler that matters: WebGL 2 in headless Chromium (ANGLE's shader
 // translator, on SwiftShader). One page compiles every translation of the repository's shaders, links
 // the stages' pairs, and compiles copies with a deliberate error whose line ANGLE must report as the
-// source's. Built only where CMake finds Chromium; elsewhere the test "glsl es: Chromium" is skipped.
+// source's. Chromium is driven by the repository's one DevTools client (tools/web/cdp.py), through
+// tools/web/page_value.py, which serves the page and prints its results as JSON. Built only where
+// CMake finds Chromium; elsewhere the test "glsl es: Chromium" is skipped.
 #include "t10/glsl_es.hpp"
 
 #include "repository_shaders.hpp"
@@ -25,9 +27,9 @@ std::string translate(const std::string& source, const fs::path& file) {
         .source;
 }
 
-// Compiles every case's shader (and links it with `with`, when given) in WebGL 2 and returns, per
-// case, {compiled, linked, log}.
-const char* kPage = R"(<!DOCTYPE html><html><body><pre id="out"></pre><script>
+// Compiles every case's shader (and links it with `with`, when given) in WebGL 2 and leaves, per
+// case, {compiled, linked, log} in window.t10Results.
+const char* kPage = R"(<!DOCTYPE html><html><body><script>
 const cases = CASES;
 const gl = document.createElement("canvas").getContext("webgl2");
 const results = [];
@@ -51,38 +53,33 @@ for (const c of cases) {
   }
   results.push(r);
 }
-document.getElementById("out").textContent = "T10RESULTS" + JSON.stringify(results) + "T10END";
+window.t10Results = results;
 </script></body></html>
 )";
 
 nlohmann::json runInChromium(const nlohmann::json& cases) {
     const fs::path dir = fs::path(T10_TEST_TMP_DIR) / "glsl_es_browser";
     fs::remove_all(dir);
-    fs::create_directories(dir / "profile");
+    fs::create_directories(dir);
     std::string json = cases.dump();
     for (std::size_t at = 0; (at = json.find("</", at)) != std::string::npos; at += 3) json.replace(at, 2, "<\\/");
     std::string page = kPage;
     page.replace(page.find("CASES"), 5, json);
     std::ofstream(dir / "page.html", std::ios::binary) << page;
-    const std::string command = std::string("'") + T10_CHROMIUM + "' --headless --no-sandbox --use-angle=swiftshader "
-                                "--enable-unsafe-swiftshader --ignore-gpu-blocklist --user-data-dir='" +
-                                (dir / "profile").string() + "' --dump-dom 'file://" + (dir / "page.html").string() +
-                                "' 2>'" + (dir / "chromium.log").string() + "'";
+    const std::string log = (dir / "page_value.log").string();
+    const std::string command = std::string("PYTHONPATH='") + T10_TOOLS_DIR + "' '" + T10_PYTHON +
+                                "' -m web.page_value --root '" + dir.string() + "' --page page.html --value window.t10Results" +
+                                " --renderer swiftshader --timeout 150 --chromium '" + T10_CHROMIUM + "' --log '" +
+                                (dir / "chromium.log").string() + "' 2>'" + log + "'";
     FILE* pipe = popen(command.c_str(), "r");
     REQUIRE(pipe != nullptr);
-    std::string dom;
+    std::string text;
     char buffer[4096];
-    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) dom.append(buffer, n);
+    for (std::size_t n; (n = fread(buffer, 1, sizeof buffer, pipe)) > 0;) text.append(buffer, n);
     const int status = pclose(pipe);
-    const std::size_t begin = dom.find("T10RESULTS"), end = dom.find("T10END");
-    INFO("chromium exit status " << status << "; its messages: " << (dir / "chromium.log").string());
-    REQUIRE(begin != std::string::npos);
-    REQUIRE(end != std::string::npos);
-    std::string text = dom.substr(begin + 10, end - begin - 10);
-    // --dump-dom writes the text node HTML-escaped.
-    for (const auto& [entity, character] : {std::pair<std::string, std::string>{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
-        for (std::size_t at = 0; (at = text.find(entity, at)) != std::string::npos; at += character.size())
-            text.replace(at, entity.size(), character);
+    INFO("page_value.py's exit status " << status << "; its messages: " << log << " (and chromium.log beside it):\n"
+                                        << readText(log));
+    REQUIRE(status == 0);
     return nlohmann::json::parse(text);
 }
 

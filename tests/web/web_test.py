@@ -36,9 +36,8 @@ import time
 
 sys.dont_write_bytecode = True
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "web"))
-import cdp  # noqa: E402  (the DevTools client)
-import web_page  # noqa: E402  (a stage's page in one tab: its state, its frame)
+from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
+from web import web_page  # noqa: E402  (a stage's page in one tab: its state, its frame)
 
 Failure = cdp.Failure
 GOLDEN_QUERY = "size=640x360&camera=default&frames=1"  # tests/golden/render_args.sh, as a query

@@ -37,7 +37,7 @@ set(WEB_COMMON --web ${T10_WEB_PAGES} --chromium ${T10_CHROMIUM} --imgcompare $<
 function(t10_add_web_test name command stage)
     string(MAKE_C_IDENTIFIER "${name}" folder)
     add_test(NAME "web: ${name}"
-             COMMAND ${Python3_EXECUTABLE} ${WEB_TEST} ${command} ${WEB_COMMON} --stage ${stage}
+             COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${WEB_TEST} ${command} ${WEB_COMMON} --stage ${stage}
                      --out ${WEB_OUT}/${folder} ${ARGN})
     set_tests_properties("web: ${name}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77)
 endfunction()

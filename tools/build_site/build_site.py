@@ -30,10 +30,8 @@ import sys
 import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "markers"))
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import markers  # noqa: E402
-import web_stages  # noqa: E402
+from markers import markers  # noqa: E402  (tools/ on PYTHONPATH)
+import web_stages  # noqa: E402  (beside this script)
 
 IMAGE_SIZE = "1280x720"
 # Files of site/ that are tooling, not pages.

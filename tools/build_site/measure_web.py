@@ -22,13 +22,10 @@ import statistics
 import sys
 import time
 
-HERE = os.path.dirname(os.path.abspath(__file__))
 sys.dont_write_bytecode = True
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "web"))
-import web_stages  # noqa: E402
-import cdp  # noqa: E402  (the DevTools client)
-from cdp import Failure, evaluate  # noqa: E402
+import web_stages  # noqa: E402  (beside this script)
+from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
+from web.cdp import Failure, evaluate  # noqa: E402
 
 # WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer
 # (what a reader's browser falls back to; no EXT_texture_norm16, so the pages emulate GL_R16).

@@ -137,10 +137,10 @@ exports=""
 for kv in "${envs[@]}"; do exports+="export $(printf '%q' "$kv"); "; done
 # devcontainer.json's lifecycle commands, read as the schema test reads the file.
 lifecycle() {
-    python3 -c 'import sys; sys.path.insert(0, sys.argv[1]); import devcontainer_schema as d
-value = d.load_jsonc(open(sys.argv[2]).read()).get(sys.argv[3], "")
+    PYTHONPATH="$work/context/tests/devcontainer" python3 -c 'import sys; import devcontainer_schema as d
+value = d.load_jsonc(open(sys.argv[1]).read()).get(sys.argv[2], "")
 print(value if isinstance(value, str) else " && ".join(value))' \
-        "$work/context/tests/devcontainer" "$work/context/.devcontainer/devcontainer.json" "$1"
+        "$work/context/.devcontainer/devcontainer.json" "$1"
 }
 post_create=$(lifecycle postCreateCommand)
 post_start=$(lifecycle postStartCommand)
@@ -161,7 +161,8 @@ echo "devcontainer-check: the root with the build holds $(du -sm --one-file-syst
 # libseccomp's Python binding for Docker's seccomp profile.
 enter "$root" root "apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends x11-apps netpbm python3-seccomp" >>"$log" 2>&1 ||
     { echo "devcontainer-check: installing the check's own tools failed (log $log)" >&2; exit 1; }
-mkdir -p "$root/opt/devcontainer-check/out" && cp "$here"/inside.sh "$here"/same_picture.py "$here"/docker_seccomp.py "$here"/novnc_screenshot.py "$root/opt/devcontainer-check/"
+mkdir -p "$root/opt/devcontainer-check/out" && cp "$here"/inside.sh "$here"/same_picture.py "$here"/docker_seccomp.py "$here"/novnc_screenshot.py "$root/opt/devcontainer-check/" &&
+    mkdir -p "$root/opt/devcontainer-check/web" && cp "$here"/../web/__init__.py "$here"/../web/cdp.py "$root/opt/devcontainer-check/web/"
 chown "$(grep "^$user:" "$root/etc/passwd" | cut -d: -f3,4)" "$root/opt/devcontainer-check/out"
 rm -rf "$work/out"
 if [ $status -eq 0 ]; then

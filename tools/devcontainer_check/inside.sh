@@ -74,9 +74,10 @@ make_run() {
 
 novnc_page() {
     # The page at the port's root redirects to vnc.html, which connects and draws the desktop;
-    # novnc_screenshot.py waits for that in real time.
+    # novnc_screenshot.py waits for that in real time, through the DevTools client copied beside it
+    # (web/cdp.py).
     local said
-    said=$(python3 "$here/novnc_screenshot.py" "http://127.0.0.1:$NOVNC_PORT/" "$out/novnc.png" 1280x800)
+    said=$(PYTHONPATH="$here" python3 "$here/novnc_screenshot.py" "http://127.0.0.1:$NOVNC_PORT/" "$out/novnc.png" 1280x800)
     local rc=$?
     seen=$said
     [ $rc -eq 0 ] || return 1

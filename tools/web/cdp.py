@@ -7,8 +7,10 @@ for the network fails loudly.
 
 Used by the site's browser tests (site/tests/browser_test.py, live_test.py), the web stages' tests
 (tests/web/web_test.py, through web_page.py), the site build's first-frame measurement
-(tools/build_site/measure_web.py) and make web-serve (web_page.py). Each imports it from this folder
-by path, so it works from a fresh clone and from any build folder.
+(tools/build_site/measure_web.py), make web-serve (web_page.py), the GLSL ES translations' browser
+test (tests/unit/test_glsl_es_browser.cpp, through page_value.py) and the dev container's noVNC
+screenshot (tools/devcontainer_check/novnc_screenshot.py, a page the container serves itself). Each
+imports it as `web.cdp`, with tools/ on PYTHONPATH (tools/web/__init__.py).
 """
 import base64
 import contextlib
@@ -198,13 +200,15 @@ class Browser:
 @contextlib.contextmanager
 def browsing(root, chromium, log_path, deadline=None, gpu_args=("--disable-gpu",), window=(1280, 900)):
     """A Chromium (a fresh profile) and a local server of `root`: yields (browser, base URL with a
-    trailing /); afterwards ends both and removes the profile."""
+    trailing /); afterwards ends both and removes the profile. root None: no server (base URL None),
+    for a page served by someone else on 127.0.0.1."""
     profile = tempfile.mkdtemp(prefix="t10-chromium-")
     browser = server = None
     try:
         browser = Browser(chromium, profile, log_path, deadline, gpu_args, window)
-        server = start_server(root)
-        yield browser, f"http://127.0.0.1:{server.server_address[1]}/"
+        if root is not None:
+            server = start_server(root)
+        yield browser, server and f"http://127.0.0.1:{server.server_address[1]}/"
     finally:
         if browser:
             browser.close()

@@ -28,8 +28,7 @@ import time
 import zlib
 
 sys.dont_write_bytecode = True
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import cdp  # noqa: E402  (the DevTools client)
+from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
 
 Failure = cdp.Failure
 

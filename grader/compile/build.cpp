@@ -1,7 +1,7 @@
 // Builds a submission's Tutorial10.cpp like a stage, by one compiler call in the job's sandbox with the
 // recipe the build wrote (host_kit.txt), and keeps the program in the grader's cache under the hash
 // of everything that went into it.
-#include "build/build.hpp"
+#include "compile/build.hpp"
 
 #include "intake/staging.hpp"
 #include "t10/error.hpp"

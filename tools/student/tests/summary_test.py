@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Unit tests of tools/check/summary.py on hand-written reports: today's report.json, the fields a
+"""Unit tests of tools/student/summary.py on hand-written reports: today's report.json, the fields a
 newer grader adds (fix_first, summary, per-step entries, mistakes with estimates), missing or oddly
 shaped optional fields, statuses other than graded, and files that are not reports.
 
-usage: summary_test.py SCRATCH_DIR
+usage: PYTHONPATH=tools summary_test.py SCRATCH_DIR
 """
 import json
 import os
@@ -13,8 +13,7 @@ import unittest
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(HERE))
-import summary  # noqa: E402
+from student import summary  # noqa: E402  (tools/ on PYTHONPATH)
 
 SCRATCH = None
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tests of the students' commands (tools/check/), each in a scratch folder: nothing is written under
+"""Tests of the students' commands (tools/student/), each in a scratch folder: nothing is written under
 the source tree (every student folder goes to --scratch through STUDENT_DIR / T10_STUDENT_DIR).
 
 usage: students_test.py new   --source-root ROOT --scratch DIR
@@ -147,7 +147,7 @@ def test_check(args):
     expect(code == 0, "make student PART=1 failed")
     part1 = os.path.join(students, "part1")
     fill_part1(args.source_root, part1)
-    check = [os.path.join(args.source_root, "tools", "check", "check.sh"), args.grader, "1",
+    check = [os.path.join(args.source_root, "tools", "student", "check.sh"), args.grader, "1",
              os.path.join(args.scratch, "report")]
     shader = os.path.join(part1, "PostProcess.frag")
     right, wrong = "const float fYwhite = 0.22f;", "const float fYwhite = 0.25f;"
