@@ -16,7 +16,8 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
 # tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter;
-# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; emscripten: the
+# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; default-jre-headless:
+# the Java that runs JPlag for the similarity tests; emscripten: the
 # browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
 # run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
@@ -25,8 +26,8 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
 FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex python3-pygments \
-                 fonts-dejavu-core webp
+                 default-jre-headless jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex \
+                 python3-pygments fonts-dejavu-core webp
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
 .PHONY: all deps configure build run test bless clean help
@@ -55,11 +56,14 @@ help:
 	@echo "make bench  time the tutorial's chain against the usual alternatives (release build, $(OUT)/bench/)"
 	@echo "make bench-passes  exercise 39: post-process GPU time and halo radius for 0-10 blur passes (release build)"
 	@echo "make bench-gltf  time loading a generated one-million-triangle glTF scene (release build)"
-	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=)"
+	@echo "make grade PART=1|2|3 SUBMISSIONS=\"dir ...\"  grade students' stages into $(REPORT)/ (REPORT=, GRADE_JOBS=, SIMILARITY=1)"
 	@echo "make bench-grader  grade the grader's test batches with a fresh cache: submissions per minute, CPU s and peak memory each"
 	@echo "make grade-sweep  every fitted constant of the grader's mistake catalogue across its fit's range: named, measured within 10 %"
 	@echo "make grade-jobs-check  a fork bomb graded beside honest submissions (--jobs 2) by a non-root grader, 20 rounds: none starved"
 	@echo "make grade-deps  install FLIP (pinned, from PyPI) into $(GRADE_VENV)/ for the grader"
+	@echo "make similarity-deps  install Java (Debian) and JPlag (pinned jars, from Maven Central) into $(SIMILARITY_ENGINE)/"
+	@echo "make bench-similarity  compare 900 generated Part 3 submissions with JPlag: wall and CPU time, peak memory"
+	@echo "make similarity PART=N SUBMISSIONS=\"dir ...\"|SUBMISSIONS_DIR=folder  pairs of students to review (JPlag, the handed-out code excluded) into $(REPORT)/"
 	@echo "make grader  build only what grading needs (the grader, the reference stages, FLIP): for grading machines"
 	@echo "make grader-packages  print the packages make grader installs (grader/platforms/install_grader.sh checks them)"
 	@echo "make gradescope PART=1|2|3  package a Gradescope autograder into $(OUT)/gradescope/partN/autograder.zip"
@@ -278,11 +282,11 @@ test-asan: PACKAGES += $(TEST_PACKAGES)
 test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
 	cmake --build build-asan -j $(JOBS)
-	@# The grader's tests run here too: FLIP into this build's own venv (else they skip, saying why), made
+	@# The grader's tests run here too: FLIP into this build's own venv and JPlag beside it (else they skip, saying why), made
 	@# with Debian's interpreter where there is one, which every user may run: the as-user fork-bomb test
 	@# skips with a venv of a Python under a 0700 home (pyenv's under /root), and this suite skips none.
 	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv \
-	    GRADE_PYTHON=$(firstword $(wildcard /usr/bin/python3) python3)
+	    GRADE_PYTHON=$(firstword $(wildcard /usr/bin/python3) python3) SIMILARITY_ENGINE=build-asan/jplag
 	cd build-asan && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 # `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain
@@ -355,8 +359,9 @@ grade-args:
 
 # The grader is built with the tests (their CPU reference): Catch2 and its sandbox, bubblewrap.
 grade check: PACKAGES += catch2 bubblewrap
-grade: grade-args build grade-deps
-	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(SUBMISSIONS)
+# SIMILARITY=1 also compares the class (t10-grade --similarity; make similarity-deps first).
+grade: grade-args build grade-deps $(if $(SIMILARITY),similarity-deps)
+	$(BIN)/t10-grade --part $(PART) --report $(REPORT) --jobs $(GRADE_JOBS) $(if $(SIMILARITY),--similarity) $(SUBMISSIONS)
 
 # make bench-grader: what grading a class costs (grader/bench_grader.py): the grader's test batches (every
 # part's references, known mistakes, fitted parameters and broken submissions) graded with a fresh
@@ -388,9 +393,37 @@ grade-jobs-check: build grade-deps
 	rc=$$?; [ $$rc -eq 77 ] && echo "grade-jobs-check: SKIPPED (above: why)" && exit 0; exit $$rc
 
 # The grader's tests need FLIP too (make test makes it); without it (no network for PyPI) they report
-# themselves skipped.
+# themselves skipped. The same for JPlag's jars (make test installs Java with the test packages).
 grade-deps-or-skip:
 	@$(MAKE) --no-print-directory grade-deps || echo "warning: FLIP could not be installed: the grader's tests will be skipped"
+	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE) || \
+	    echo "warning: JPlag could not be fetched: the similarity tests will be skipped"
+
+# Similarity between students (issue 51; grader/similarity/): JPlag 4.3.0, a library on Maven Central,
+# pinned jar by jar (size and SHA-256) in grader/similarity/jplag.lock and fetched into
+# $(SIMILARITY_ENGINE)/ by similarity-deps; run by Debian's Java (default-jre-headless: OpenJDK 17 on
+# Debian 12, 21 on Debian 13 and Ubuntu 24.04; JPlag 4.3 needs 17 or later). Nothing is fetched when it
+# runs. make similarity PART=N SUBMISSIONS="dir ..." (or SUBMISSIONS_DIR=folder of submission folders)
+# writes similarity.json, .csv and .html into $(REPORT)/; t10-grade --similarity does the same after
+# grading a class. Neither make run nor make build needs any of it.
+SIMILARITY_ENGINE := $(BUILD)/jplag
+.PHONY: similarity similarity-deps
+similarity-deps:
+	@$(MAKE) --no-print-directory deps PACKAGES=default-jre-headless
+	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE)
+
+# make bench-similarity: 900 generated Part 3 submissions compared (grader/similarity/bench_similarity.py):
+# wall and CPU time, peak memory; fails above two minutes of wall time.
+.PHONY: bench-similarity
+bench-similarity: similarity-deps
+	python3 grader/similarity/bench_similarity.py $(CURDIR) $(SIMILARITY_ENGINE) $(OUT)/bench-similarity
+
+similarity: similarity-deps
+	@[ -n "$(PART)" ] && [ -n "$(SUBMISSIONS)$(SUBMISSIONS_DIR)" ] || { \
+	    echo 'usage: make similarity PART=1|2|3 SUBMISSIONS="dir ..." | SUBMISSIONS_DIR=folder [REPORT=dir] [SIMILARITY_THRESHOLD=x]'; exit 2; }
+	python3 grader/similarity/similarity.py --part $(PART) --report $(REPORT) --engine $(SIMILARITY_ENGINE) \
+	    $(if $(SIMILARITY_THRESHOLD),--threshold $(SIMILARITY_THRESHOLD)) \
+	    $(if $(SUBMISSIONS_DIR),--folder "$(SUBMISSIONS_DIR)") $(SUBMISSIONS)
 
 # Students (tools/student/): `make student PART=N` starts student/partN/ (Part 1 from
 # tutorial10_part0_start/, Part N from the student's own part(N-1) or else the reference of Part N-1);

@@ -36,6 +36,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     report    scoring, checks, diagnosis, part, intake (report.json, report.html, gradebook, class index)
     platforms report and what it may include          (the platforms' result files)
     tga       isolation, intake       (t10-grade-tga: a loader copied in and run like a stage)
+    similarity  report                (--similarity: JPlag run over the class, the index's section)
     cli       every stage             (the command line on top)
     tests     the checks' core (checks, diagnosis, part), never what is around it (and GRADER_TEST_HEADERS)
 
@@ -105,7 +106,9 @@ GRADER_ALLOWED = {
     "report": REPORT_STAGES,
     "platforms": REPORT_STAGES | {"platforms"},
     "tga": {"tga", "isolation", "intake"},
-    "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "part", "scoring", "report", "platforms"},
+    "similarity": {"similarity", "report"},
+    "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "part", "scoring", "report", "platforms",
+            "similarity"},
     "tests": {"tests", "checks", "diagnosis", "part"},
 }
 

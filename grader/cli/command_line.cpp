@@ -5,6 +5,7 @@
 #include "platforms/formats.hpp"
 #include "report/class_index.hpp"
 #include "isolation/options.hpp"
+#include "similarity/similarity.hpp"
 
 #include "t10/error.hpp"
 
@@ -20,7 +21,8 @@ namespace fs = std::filesystem;
 const char* const kUsage =
     "usage: t10-grade --part 1|2|3 [--report DIR] [--jobs N] [--timeout SECONDS] [--cache DIR] [--format F]...\n"
     "                 [--name-from N|PATTERN] [--roster CSV] [--fill-from-reference unchanged|all|none]\n"
-    "                 [--isolation auto|namespaces|uid] [--no-sandbox] SUBMISSION...\n"
+    "                 [--isolation auto|namespaces|uid] [--no-sandbox] [--similarity [--similarity-threshold X]]\n"
+    "                 SUBMISSION...\n"
     "  SUBMISSION  a folder with any of Tutorial10.cpp and the part's shaders; only regular files with the\n"
     "              part's names are taken (no symlinks, 256 KiB each); the report lists every file\n"
     "  --report    where report.json/report.html per submission and gradebook.csv go (default grade-report)\n"
@@ -36,6 +38,10 @@ const char* const kUsage =
     "              each submission by the student id of its name; writes index.html and grades-lms.csv by id\n"
     "  --fill-from-reference  which missing files come from the reference stage: unchanged (default: the\n"
     "              files the part does not ask the student to change), all, or none\n"
+    "  --similarity  also compare every two submissions with JPlag, the code the course hands out excluded:\n"
+    "              similarity.json, .csv and .html (pairs to review, not a verdict) beside index.html, which\n"
+    "              lists them; student code is only read. make similarity-deps installs JPlag and Java\n"
+    "  --similarity-threshold X  flag pairs from similarity X (0-1) instead of the class's own threshold\n"
     "  --isolation how student code is contained (default auto: namespaces, else uid):\n"
     "              namespaces  bubblewrap (bwrap): no network, no environment, a fixed read-only view of the\n"
     "                          system and the project, one writable output folder, a small /tmp, killed\n"
@@ -120,6 +126,11 @@ void parse(int argc, char** argv, Config& config) {
             config.nameFrom = args.value();
         } else if (arg == "--roster") {
             config.roster = args.value();
+        } else if (arg == "--similarity") {
+            config.similarity = true;
+        } else if (arg == "--similarity-threshold") {
+            config.similarity = true;
+            config.similarityThreshold = args.number(0.01, 1);
         } else if (arg == "--fill-from-reference") {
             const std::string v = args.value();
             if (v == "unchanged") config.fill = FillPolicy::Unchanged;
@@ -134,6 +145,11 @@ void parse(int argc, char** argv, Config& config) {
     }
     if (config.part == 0) throw UsageError("--part is required (1, 2 or 3)");
     if (config.submissions.empty()) throw UsageError("no SUBMISSION folder given");
+    if (config.similarity) {
+        const std::string problem = similarityEngineProblem();
+        if (!problem.empty()) throw UsageError("--similarity: " + problem);
+        if (config.submissions.size() < 2) throw UsageError("--similarity: give at least two submissions to compare");
+    }
     std::map<std::string, RosterEntry> roster;
     if (!config.roster.empty()) {
         try {
@@ -159,6 +175,8 @@ void parse(int argc, char** argv, Config& config) {
                              "folder, -1 = the last) or --name-from PATTERN (a regular expression whose first group is "
                              "the name), or by student id with --roster CSV");
         }
+        if (config.similarity && (name == "similarity" || name.rfind("similarity.", 0) == 0))
+            throw UsageError(s + ": the name '" + name + "' is a file of --similarity's report: name it otherwise (--name-from)");
         config.names.push_back(name);
     }
     const fs::path report = fs::weakly_canonical(fs::absolute(config.reportDir));

@@ -24,6 +24,8 @@ struct Config {
     std::string roster;                // a CSV mapping those names to student ids (class_index.hpp)
     std::vector<std::string> names;    // per submission: its report folder's name
     std::map<std::string, std::string> studentNames;  // per name: the student's name from the roster
+    bool similarity = false;           // --similarity: the pairs to review (similarity/similarity.hpp)
+    double similarityThreshold = -1;   // --similarity-threshold; < 0: the class's own
 };
 
 extern const char* const kUsage;

@@ -27,6 +27,7 @@
 #include "platforms/formats.hpp"
 #include "report/output.hpp"
 #include "report/report.hpp"
+#include "similarity/similarity.hpp"
 #include "isolation/run_limited.hpp"
 #include "isolation/sandbox.hpp"
 #include "intake/staging.hpp"
@@ -559,7 +560,17 @@ int gradeAll(const Config& config) {
     for (std::thread& t : jobs.threads) t.join();
     const std::string gradebook = (fs::path(config.reportDir) / "gradebook.csv").string();
     writeGradebook(reports, gradebook);
-    writeClassIndex(reports, config.studentNames, config.reportDir);
+    std::string similarity;
+    if (config.similarity) {
+        try {
+            similarity = compareClass(config.part, config.submissions, config.names, config.reportDir, config.similarityThreshold);
+        } catch (const std::exception& error) {
+            std::cerr << "t10-grade: error: " << errorLine(error) << "\n";
+            similarity = "<h2>Pairs to review</h2>\n<p>The comparison failed: " + htmlEscape(errorLine(error)) + "</p>\n";
+            failed = true;
+        }
+    }
+    writeClassIndex(reports, config.studentNames, config.reportDir, similarity);
     std::cout << "wrote " << gradebook << ", index.html, grades-lms.csv and a report per submission in " << config.reportDir << "/\n";
     // A submission the grader could not grade (status grader-error in the gradebook) is the
     // grader's failure, not the student's.

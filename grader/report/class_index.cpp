@@ -109,7 +109,7 @@ std::map<std::string, RosterEntry> readRoster(const std::string& path) {
 }
 
 void writeClassIndex(const std::vector<Report>& reports, const std::map<std::string, std::string>& names,
-                     const std::string& dir) {
+                     const std::string& dir, const std::string& more) {
     std::vector<const Report*> sorted;
     for (const Report& r : reports) sorted.push_back(&r);
     std::sort(sorted.begin(), sorted.end(), [](const Report* a, const Report* b) { return a->submission < b->submission; });
@@ -189,7 +189,7 @@ void writeClassIndex(const std::vector<Report>& reports, const std::map<std::str
     }
     out << "<tr><th>failed by</th><th></th><th></th>";
     for (int step : steps) out << "<th>" << failures[step] << "</th>";
-    out << "</tr>\n</table>\n</body></html>\n";
+    out << "</tr>\n</table>\n" << more << "</body></html>\n";
     writeOutputFile(dir + "/index.html", out.str(), "the class index");
 }
 

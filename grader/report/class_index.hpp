@@ -21,8 +21,9 @@ struct RosterEntry {
 // the fault (no such column, an empty or repeated key or id).
 std::map<std::string, RosterEntry> readRoster(const std::string& path);
 
-// `names` maps a submission (its report folder) to the student's name, where a roster gave one.
+// `names` maps a submission (its report folder) to the student's name, where a roster gave one. `more`
+// is HTML to end the page with (t10-grade --similarity's pairs to review).
 void writeClassIndex(const std::vector<Report>& reports, const std::map<std::string, std::string>& names,
-                     const std::string& dir);
+                     const std::string& dir, const std::string& more = "");
 
 } // namespace t10::grade
