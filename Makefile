@@ -16,8 +16,8 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 # /usr/bin/time; git: the platform tests package a checkout; bubblewrap: the grader's sandbox; xvfb +
 # xauth: the window tests; python3-jsonschema: the dev container's schema test; nodejs: the platform
 # tests run GitHub Classroom's released grading reporter, tests/fixtures/classroom-reporter;
-# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; default-jre-headless:
-# the Java that runs JPlag for the similarity tests; emscripten: the
+# glslang-tools: glslangValidator checks the GLSL ES translation of every shader; default-jre-headless
+# and maven: the Java that runs JPlag for the similarity tests and the client that fetches its jars; emscripten: the
 # browser build that the web tests load in Chromium; the site's tools and fonts) and Catch2. `make
 # run` installs none of them.
 # Chromium is the package chromium on Debian 12 and 13, chromium-browser on Ubuntu (24.04: a wrapper
@@ -26,7 +26,7 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
 FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 default-jre-headless jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex \
+                 default-jre-headless maven jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex \
                  python3-pygments fonts-dejavu-core webp
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -127,7 +127,9 @@ run: build
 # the grader's renders do): the frames are bit-identical (the test "llvmpipe: ... the same bits" checks
 # it) and the suite's small renders spend more CPU compiling shaders than drawing them (the vectors:
 # ctest 163 s, not 168).
-test: PACKAGES += catch2 python3-venv
+# Java and Maven before the rest: grade-deps-or-skip fetches JPlag's jars with mvn beside the build, while the
+# other test packages are still being installed.
+test: PACKAGES += catch2 python3-venv default-jre-headless maven
 test: deps
 	@$(MAKE) --no-print-directory site-deps || echo "warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so"
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
@@ -409,7 +411,7 @@ grade-deps-or-skip:
 SIMILARITY_ENGINE := $(BUILD)/jplag
 .PHONY: similarity similarity-deps
 similarity-deps:
-	@$(MAKE) --no-print-directory deps PACKAGES=default-jre-headless
+	@$(MAKE) --no-print-directory deps PACKAGES="default-jre-headless maven"
 	@python3 grader/similarity/fetch_engine.py grader/similarity/jplag.lock $(SIMILARITY_ENGINE)
 
 # make bench-similarity: 900 generated Part 3 submissions compared (grader/similarity/bench_similarity.py):

@@ -3,19 +3,24 @@
 
 usage: fetch_engine.py LOCK ENGINE_DIR [--check]
 
-Each jar is downloaded to a temporary name, its size and SHA-256 checked against the lock, then renamed
-into place; a jar already there with the right hash is kept, so a second run fetches nothing. Jars the
-lock no longer names are removed. ENGINE_DIR/lock is a copy of the lock written last: similarity.py
+Maven's own client fetches them, in one run (Debian's `maven`: mvn dependency:copy-dependencies of a
+throw-away project naming exactly the lock's jars, the plugin's version pinned here), with its local
+repository inside ENGINE_DIR so that nothing is written outside the build folder. Each jar is copied to a
+temporary folder, its size and SHA-256 checked against the lock, then renamed into place; a jar already
+there with the right hash is kept, so a second run fetches nothing. Jars the lock no longer names are
+removed. ENGINE_DIR/lock is a copy of the lock written last: similarity.py
 compares it with the checkout's lock and refuses a stale or partial engine. --check fetches nothing and
 exits 1 naming what is missing or wrong. Exit 0 when every jar is in place.
 """
 import hashlib
 import os
 import shutil
+import subprocess
 import sys
-import urllib.request
+import tempfile
 
-CENTRAL = "https://repo1.maven.org/maven2"
+# The plugin that copies artifacts out of Maven's repository, pinned like the jars themselves.
+COPY_GOAL = "org.apache.maven.plugins:maven-dependency-plugin:3.6.1:copy-dependencies"
 
 
 def read_lock(path):
@@ -48,20 +53,38 @@ def digest(path):
     return sha.hexdigest()
 
 
-def fetch(group, artifact, version, size, sha, lib):
-    url = f"{CENTRAL}/{group.replace('.', '/')}/{artifact}/{version}/{jar_name(artifact, version)}"
-    target = os.path.join(lib, jar_name(artifact, version))
-    partial = target + ".partial"
-    try:
-        with urllib.request.urlopen(url, timeout=60) as response, open(partial, "wb") as out:
-            shutil.copyfileobj(response, out)
-    except OSError as error:
-        sys.exit(f"fetch_engine: {url}: {error}")
-    got_size, got_sha = os.path.getsize(partial), digest(partial)
-    if got_size != size or got_sha != sha:
-        os.unlink(partial)
-        sys.exit(f"fetch_engine: {url}: {got_size} bytes, sha256 {got_sha}; the lock says {size} bytes, {sha}")
-    os.replace(partial, target)
+def fetch(entries, engine, lib):
+    """Copies the jars of `entries` into `lib` in one mvn run (a JVM start is seconds), each checked first."""
+    if not shutil.which("mvn"):
+        sys.exit("fetch_engine: mvn is not installed (make similarity-deps installs Debian's maven)")
+    with tempfile.TemporaryDirectory(dir=engine) as work:
+        # A project whose dependencies are exactly the lock's jars, each without what it depends on.
+        dependencies = "".join(f"<dependency><groupId>{g}</groupId><artifactId>{a}</artifactId><version>{v}</version>"
+                               "<exclusions><exclusion><groupId>*</groupId><artifactId>*</artifactId></exclusion></exclusions>"
+                               "</dependency>" for g, a, v, _, _ in entries)
+        with open(os.path.join(work, "pom.xml"), "w", encoding="utf-8") as pom:
+            pom.write('<project xmlns="http://maven.apache.org/POM/4.0.0"><modelVersion>4.0.0</modelVersion>'
+                      "<groupId>t10</groupId><artifactId>jplag-engine</artifactId><version>1</version>"
+                      f"<dependencies>{dependencies}</dependencies></project>")
+        copied = os.path.join(work, "jars")
+        command = ["mvn", "--batch-mode", "--quiet", "--file", os.path.join(work, "pom.xml"),
+                   f"-Dmaven.repo.local={os.path.join(engine, 'm2')}", COPY_GOAL, f"-DoutputDirectory={copied}"]
+        run = subprocess.run(command, capture_output=True, text=True, errors="replace")
+        said = (run.stdout + run.stderr).strip().splitlines()
+        if run.returncode != 0:
+            sys.exit(f"fetch_engine: mvn dependency:copy-dependencies failed (exit {run.returncode})"
+                     + "".join("\n  " + line for line in said[-8:]))
+        for group, artifact, version, size, sha in entries:
+            name = jar_name(artifact, version)
+            partial = os.path.join(copied, name)
+            if not os.path.isfile(partial):
+                sys.exit(f"fetch_engine: {group}:{artifact}:{version}: mvn copied no {name}")
+            got_size, got_sha = os.path.getsize(partial), digest(partial)
+            if got_size != size or got_sha != sha:
+                sys.exit(f"fetch_engine: {group}:{artifact}:{version}: {got_size} bytes, sha256 {got_sha}; "
+                         f"the lock says {size} bytes, {sha}")
+        for _, artifact, version, _, _ in entries:
+            os.replace(os.path.join(copied, jar_name(artifact, version)), os.path.join(lib, jar_name(artifact, version)))
 
 
 def main():
@@ -79,14 +102,15 @@ def main():
         for name in os.listdir(lib):
             if name not in wanted:
                 os.unlink(os.path.join(lib, name))
-    for group, artifact, version, size, sha in entries:
-        path = os.path.join(lib, jar_name(artifact, version))
-        if os.path.isfile(path) and os.path.getsize(path) == size and digest(path) == sha:
-            continue
-        if check:
+    missing = []
+    for entry in entries:
+        path = os.path.join(lib, jar_name(entry[1], entry[2]))
+        if not (os.path.isfile(path) and os.path.getsize(path) == entry[3] and digest(path) == entry[4]):
+            missing.append(entry)
             problems.append(f"{path}: missing or not the jar of the lock")
-        else:
-            fetch(group, artifact, version, size, sha, lib)
+    if missing and not check:
+        fetch(missing, engine, lib)
+        problems = []
     if problems:
         sys.exit("\n".join(problems))
     if not check:
