@@ -151,7 +151,8 @@ test: deps
 	if [ -n "$$missing" ]; then cmake $(BUILD) >/dev/null && cmake --build $(BUILD) -j $(JOBS); fi; \
 	wait $$web || { tail -n 30 $(BUILD)/web.log; echo "make test: make web failed (log: $(BUILD)/web.log)"; exit 1; }; \
 	grep -h '^make web: built\|^emcc is not' $(BUILD)/web.log || true
-	cd $(BUILD) && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS)
+	@# -LE audit: the tests make site-audit runs (site/CMakeLists.txt 3c), which took make test past 5 minutes.
+	cd $(BUILD) && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS) -LE audit
 
 bless: build
 	tests/golden/bless.sh $(BIN) $(if $(filter command line,$(origin STAGES)),$(STAGES),$(shell cat $(BUILD)/golden_stages.txt))
@@ -224,12 +225,15 @@ site-deps:
 	    rm -rf $(SITE_AXE) && mkdir -p $(SITE_AXE) && cp site/tests/axe/package.json site/tests/axe/package-lock.json $(SITE_AXE)/ && \
 	    npm ci --prefix $(SITE_AXE) --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null && echo "axe-core installed into $(SITE_AXE)"; }
 
-# make site-audit: Lighthouse (pinned 12.x, site/tests/lighthouse/; 13 needs Node 22) on the tutorial page with
-# its mobile preset: accessibility 100 asserted, performance, LCP and bytes printed (site/tests/lighthouse_audit.py).
-# About a minute and 185 MB of node_modules, so not in make test; .ci/run runs it.
+# make site-audit: the site's tests labelled audit (axe-core on every page at both widths in both schemes, the
+# keyboard test of every embed with axe-core while they run: site/CMakeLists.txt 3c), then Lighthouse (pinned
+# 12.x, site/tests/lighthouse/; 13 needs Node 22) on the tutorial page with its mobile preset: accessibility
+# 100 asserted, performance, LCP and bytes printed (site/tests/lighthouse_audit.py). About two minutes and
+# 185 MB of node_modules, so not in make test; .ci/run runs it (after make web, so that the embeds run).
 SITE_LIGHTHOUSE := $(BUILD)/site-lighthouse
 .PHONY: site-audit
-site-audit: site
+site-audit: site site-deps
+	cd $(BUILD) && ctest --output-on-failure --no-tests=error -L audit
 	@command -v npm >/dev/null || $(MAKE) --no-print-directory deps PACKAGES=npm
 	@cmp -s site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/package-lock.json && [ -x $(SITE_LIGHTHOUSE)/node_modules/.bin/lighthouse ] || { \
 	    rm -rf $(SITE_LIGHTHOUSE) && mkdir -p $(SITE_LIGHTHOUSE) && cp site/tests/lighthouse/package.json site/tests/lighthouse/package-lock.json $(SITE_LIGHTHOUSE)/ && \
