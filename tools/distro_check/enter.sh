@@ -36,6 +36,15 @@ cp -L /etc/resolv.conf "$root/etc/resolv.conf"
 mkdir -p "$root/etc/ssl/certs"
 cp -L /etc/ssl/certs/ca-certificates.crt "$root/etc/ssl/certs/ca-certificates.crt"
 [ ! -f /etc/pip.conf ] || cp -L /etc/pip.conf "$root/etc/pip.conf"
+# The host's own CAs too, where the root's stores are made from them: Java's keystore (ca-certificates-java,
+# which Maven uses) is built from the root's certificates, not from the bundle above, so a host that
+# trusts a local CA (a proxy's) must hand it on for mvn to reach Maven Central; update-ca-certificates runs
+# below, inside the root.
+local_cas=$(find /usr/local/share/ca-certificates -name '*.crt' 2>/dev/null | head -n 1)
+if [ -n "$local_cas" ]; then
+    mkdir -p "$root/usr/local/share/ca-certificates"
+    find /usr/local/share/ca-certificates -name '*.crt' -exec cp -L {} "$root/usr/local/share/ca-certificates/" \;
+fi
 if [ -n "${PIP_FIND_LINKS:-}" ] && [ -d "$PIP_FIND_LINKS" ]; then
     mkdir -p "$root$PIP_FIND_LINKS" && mount --bind -o ro "$PIP_FIND_LINKS" "$root$PIP_FIND_LINKS"
 fi
@@ -45,6 +54,9 @@ pivot_root . .host
 umount -l /.host
 rmdir /.host
 cd /
+if [ -n "$local_cas" ] && command -v update-ca-certificates >/dev/null; then
+    update-ca-certificates >/dev/null 2>&1 || echo "enter: update-ca-certificates failed in the root: the host's own CAs are not trusted there" >&2
+fi
 env=()
 for kv in "$@"; do
     case "$kv" in HOME=*) env+=("HOME=$home") ;; *) env+=("$kv") ;; esac

@@ -92,7 +92,9 @@ CaseRun part1Case(const FrameModel& frame) {
     return run;
 }
 
-const Check& find(const std::vector<Check>& checks, const std::string& id) {
+// The id as a pointer, not a std::string: GCC 14's -Wdangling-reference takes a reference returned by a
+// function given a temporary string for one into that temporary (Debian 13's g++, under -Werror).
+const Check& find(const std::vector<Check>& checks, const char* id) {
     for (const Check& check : checks)
         if (check.id == id) return check;
     FAIL("no check " << id);
