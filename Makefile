@@ -293,6 +293,7 @@ test-asan: deps
 	@# skips with a venv of a Python under a 0700 home (pyenv's under /root), and this suite skips none.
 	@$(MAKE) --no-print-directory grade-deps-or-skip GRADE_VENV=build-asan/grade-venv \
 	    GRADE_PYTHON=$(firstword $(wildcard /usr/bin/python3) python3) SIMILARITY_ENGINE=build-asan/jplag
+	@$(MAKE) --no-print-directory site-deps SITE_AXE=build-asan/site-axe || echo "warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so"
 	cd build-asan && GALLIVM_PERF=nopt LP_NATIVE_VECTOR_WIDTH=128 ctest --output-on-failure --no-tests=error -j $(JOBS)
 
 # `make bench` (tools/bench/): the tutorial's chain against LearnOpenGL-style bloom, a 13-tap chain

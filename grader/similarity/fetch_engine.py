@@ -92,6 +92,8 @@ def main():
     if len(args) != 2:
         sys.exit(__doc__.split("\n\n")[1])
     lock_path, engine = args
+    # Absolute: Maven takes a relative -DoutputDirectory from the throw-away project's folder, not from here.
+    engine = os.path.abspath(engine)
     check = "--check" in sys.argv[1:]
     entries = read_lock(lock_path)
     lib = os.path.join(engine, "lib")

@@ -45,9 +45,17 @@ def main():
         problems.append(f"without Java: exit {refused.returncode}, {refused.stderr.strip()[:200]!r}")
     if os.path.exists(os.path.join(out, "refused")):
         problems.append("without Java the grader still wrote a report")
-    if shutil.which("java") is None or problems:
+    # JPlag's jars where this build's t10-grade looks for them (build/jplag/, as the generated class's test).
+    engine = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(grade))), "jplag")
+    jars = subprocess.run([sys.executable, os.path.join(root, "grader", "similarity", "fetch_engine.py"),
+                           os.path.join(root, "grader", "similarity", "jplag.lock"), engine, "--check"],
+                          capture_output=True, text=True)
+    if shutil.which("java") is None or jars.returncode != 0 or problems:
         for problem in problems:
             print("FAIL:", problem)
+        if not problems:
+            print("SKIP: " + ("java is not installed" if shutil.which("java") is None else
+                              f"JPlag's jars are not in {engine} (make similarity-deps)"))
         return 1 if problems else 77
     report = os.path.join(out, "report")
     result = subprocess.run([grade, "--part", "3", "--fill-from-reference", "none", "--jobs", "2", "--similarity",
