@@ -30,6 +30,7 @@ import time
 sys.dont_write_bytecode = True
 from web import cdp, marionette  # noqa: E402  (tools/ on PYTHONPATH)
 from web.cdp import Failure  # noqa: E402
+from live_embeds import LOAD_PICTURES, no_webgl_problems  # noqa: E402  (beside this script)
 
 SKIP = 77
 
@@ -109,13 +110,9 @@ def check_no_webgl(args, url_path, out):
                     "without WebGL the embeds did not notice")
         # The pictures below the first screen load lazily (issue 50's page weight): each is made to load,
         # then looked at, as live_test.py does in Chromium.
-        browser.evaluate("Promise.all([...document.images].map(i => { i.loading = 'eager'; "
-                         "return i.decode().catch(() => null); })).then(() => true)")
+        browser.evaluate(LOAD_PICTURES)
         current = embeds(browser)
-        for e in current:
-            if e["state"] != "unavailable" or "WebGL2" not in e["note"] or e["button"] or not e["imageShown"]:
-                problems.append(f"without WebGL, {e['stage']}: state {e['state']}, note {e['note']!r}, "
-                                f"button shown {e['button']}, picture shown {e['imageShown']}")
+        problems += no_webgl_problems(current)
         if current:
             first = current[0]["stage"]
             browser.display_screenshot(os.path.join(out, "live-firefox-no-webgl.png"), f'.live[data-stage="{first}"]')

@@ -34,6 +34,7 @@ import time
 sys.dont_write_bytecode = True
 from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
 from web.cdp import Failure, evaluate, screenshot  # noqa: E402
+from live_embeds import LOAD_PICTURES, no_webgl_problems  # noqa: E402  (beside this script)
 
 # WebGL2 as Chromium draws it without a usable GPU: ANGLE on SwiftShader, its own software renderer (no
 # EXT_texture_norm16: the pages emulate GL_R16). The goldens' rasteriser, llvmpipe, is the web tests'.
@@ -260,15 +261,9 @@ def check_no_webgl(chromium, site, page, out, timeout, width):
         wait_until(browser, session, lambda c: all(s["state"] != "idle" or not s["src"] for s in c),
                    timeout / 2, "the embeds did not notice the missing WebGL")
         # The pictures below the first screen load lazily: each is made to load, then looked at.
-        evaluate(browser, session, "Promise.all([...document.images].map(i => { i.loading = 'eager'; "
-                                   "return i.decode().catch(() => null); })).then(() => true)", await_promise=True)
+        evaluate(browser, session, LOAD_PICTURES, await_promise=True)
         current = states(browser, session)
-        for s in current:
-            if not s["src"]:
-                continue
-            if s["state"] != "unavailable" or "WebGL2" not in s["note"] or s["button"] or not s["imageShown"]:
-                problems.append(f"without WebGL, {s['stage']}: state {s['state']}, note {s['note']!r}, "
-                                f"button shown {s['button']}, picture shown {s['imageShown']}")
+        problems += no_webgl_problems([s for s in current if s["src"]])
         first = next((s["stage"] for s in current if s["src"]), None)
         if first:
             screenshot(browser, session, os.path.join(out, "live-no-webgl.png"),
