@@ -112,5 +112,12 @@ function(t10_web_stage target folder)
          ${PROJECT_SOURCE_DIR}/common/assets/*)
     set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged})
     set(T10_WEB_STAGE ${target})
-    configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${out}/index.html @ONLY)
+    # The page is made at configure time in the build folder and copied into the output folder by a
+    # build rule, so that `make web` puts it back when the output is gone (rm -rf out: it did not).
+    set(page ${CMAKE_CURRENT_BINARY_DIR}/pages/${target}/index.html)
+    configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${page} @ONLY)
+    add_custom_command(OUTPUT ${out}/index.html COMMAND ${CMAKE_COMMAND} -E copy ${page} ${out}/index.html
+                       DEPENDS ${page} VERBATIM)
+    add_custom_target(${target}_page DEPENDS ${out}/index.html)
+    add_dependencies(${target} ${target}_page)
 endfunction()
