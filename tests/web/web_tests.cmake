@@ -127,9 +127,10 @@ t10_add_web_test("tutorial10_part3_gaussian on SwiftShader matches its golden" g
 
 # The page's workbench contract (tests/web/workbench_test.py): Parts 1-3 in one Chromium, one page load
 # each; Module.t10Shaders lists the stage's files, t10SetShader answers errors on the student's line
-# and keeps the last good program drawing, a wrong edit leaves the golden and the reference's own files
-# bring it back. About 11 s alone on two cores.
-set(workbench_test "web: Module.t10SetShader on Parts 1-3: errors on the student's line, the reference's shaders match the goldens")
+# and keeps the last good program drawing, a wrong edit leaves the golden (and Module.t10Check names
+# it with its value), the reference's own files bring the golden back and Module.t10Check scores them
+# 100. About 14 s alone on two cores.
+set(workbench_test "web: Module.t10SetShader and t10Check on Parts 1-3: errors on the student's line, the reference's shaders match the goldens and score 100")
 set(cases "")
 foreach(stage ${parts})
     if(NOT stage STREQUAL "tutorial10_part0_start")

@@ -70,8 +70,10 @@
     HEAPU8.set(bytes, buffer); // HEAPU8 read after the allocation: memory may have grown
     const framesBefore = Number(document.body.dataset.t10Frames || 0);
     const answer = JSON.parse(ccall('t10_set_shader', 'string', ['string'], [file]));
-    if (!answer.ok) return Promise.resolve(answer);
-    return redrawn(framesBefore).then((state) => state === 'rendered' ? answer : refusal(
+    // A refused edit that was compiled and linked (a link error) rebuilt the stage with the previous
+    // file: it too settles once that frame is drawn again.
+    if (!answer.ok && document.body.dataset.t10 !== 'loading') return Promise.resolve(answer);
+    return redrawn(framesBefore).then((state) => state === 'rendered' || !answer.ok ? answer : refusal(
         'the page stopped after the edit: ' + (document.getElementById('t10-error') || {}).textContent));
   }
 
