@@ -60,7 +60,7 @@ def gzip_size(folder, stage):
 def time_stage(page, args, stage):
     page.open(stage, f"size={args.size}&camera=default&frames=1")
     web_test.rendered(page, stage)
-    edits, checks, mistaken = [], [], []
+    edits, checks, mistaken, scores = [], [], [], set()
     expression = TIME_EDIT % {"file": json.dumps(EDIT), "old": json.dumps(WHITE[0]), "new": json.dumps(WHITE[1])}
     for _ in range(args.runs):
         result = page.evaluate(expression, await_promise=True)
@@ -68,9 +68,10 @@ def time_stage(page, args, stage):
             raise cdp.Failure(f"{stage}: the edit was refused")
         edits.extend(result["ms"])
         result = page.evaluate(TIME_CHECK, await_promise=True)
-        if result["error"] or result["score"] != 100:
+        if result["error"]:
             raise cdp.Failure(f"{stage}: the check answered {result}")
         checks.append(result["ms"])
+        scores.add(result["score"])
     source = page.evaluate(f"Module.t10Shaders().find(s => s.file === {json.dumps(EDIT)}).source")
     page.evaluate(f"Module.t10SetShader({json.dumps(EDIT)}, {json.dumps(source.replace(*WHITE))})", await_promise=True)
     for _ in range(args.runs):
@@ -78,7 +79,8 @@ def time_stage(page, args, stage):
     page.evaluate(f"Module.t10SetShader({json.dumps(EDIT)}, {json.dumps(source)})", await_promise=True)
     print(f"{stage} at {args.size} ({args.renderer}): edit-to-redraw median {statistics.median(edits):.0f} ms "
           f"(max {max(edits):.0f}, {len(edits)} edits); check median {statistics.median(checks):.0f} ms "
-          f"(max {max(checks):.0f}), with a mistake fitted {statistics.median(mistaken):.0f} ms", flush=True)
+          f"(max {max(checks):.0f}), with a mistake fitted {statistics.median(mistaken):.0f} ms; the reference "
+          f"scores {sorted(scores)}", flush=True)
 
 
 def main():
