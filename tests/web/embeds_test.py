@@ -29,6 +29,7 @@ import json
 import os
 import shutil
 import sys
+import tempfile
 import time
 import urllib.parse
 
@@ -104,11 +105,58 @@ QUICK = ["size=8192x8192", "size=640x360&frames=1000000", "view=nope", "input=%2
          "view=%3Cimg%20src%3Dx%20onerror%3Dalert(1)%3E", "camera=" + LONG, "nope=1", "%FF=%FE"]
 
 
-class Tab(web_page.StagePage):
-    """One Chromium on llvmpipe with the probes, on a local server over out/web."""
+# The site's embed script (site/assets/js/live.js) around extras' page, as the tutorial page holds it
+# (site/_includes), its picture 320 px wide so that the embed draws 320x180.
+HARNESS = """<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>live.js around extras</title></head><body>
+<div class="live" data-src="extras/index.html" data-stage="extras" data-size-text="3 MB" style="width: 320px">
+<figure class="render"><img src="data:," alt="extras" width="320" height="180"></figure>
+<button class="live-start">Run live</button><p class="live-note"></p><div class="live-controls"></div>
+</div>
+<script src="live.js"></script>
+</body></html>
+"""
 
-    def __init__(self, args):
-        super().__init__(args.web, args.chromium, os.path.join(args.out, "chromium.log"), cdp.RENDERERS["llvmpipe"],
+# One control of the embed set as a reader sets it (the events a browser fires), to each value in turn,
+# `gap` ms apart (a key held on a slider repeats every 30-50 ms): quicker than the frames.
+QUICK_CHANGES = r"""
+((name, values, gap) => {
+  const input = document.querySelector(`.live-controls [data-option="${name}"]:not(label)`);
+  if (!input) return "no control for --" + name;
+  values.forEach((value, i) => setTimeout(() => {
+    input.value = value;
+    input.dispatchEvent(new Event("input"));
+    input.dispatchEvent(new Event("change"));
+  }, i * gap));
+  return "";
+})
+"""
+
+EMBED = r"""JSON.stringify((() => {
+  const live = document.querySelector(".live"), frame = live.querySelector("iframe.live-frame");
+  const page = frame && frame.contentDocument && frame.contentDocument.body;
+  return {state: live.dataset.state, page: page ? page.dataset.t10 : "", frames: page ? Number(page.dataset.t10Frames) : 0,
+          status: (live.querySelector(".live-control-status") || {}).textContent || "",
+          drawn: page && frame.contentWindow.Module && frame.contentWindow.Module.calledRun &&
+          frame.contentWindow.Module.t10Drawn ? frame.contentWindow.Module.t10Drawn().args : null};
+})())"""
+
+
+def served_root(web, live_js, folder):
+    """A folder to serve: each page of `web` (a link) and the harness with a copy of live.js."""
+    for name in os.listdir(web):
+        os.symlink(os.path.abspath(os.path.join(web, name)), os.path.join(folder, name))
+    shutil.copy(live_js, os.path.join(folder, "live.js"))
+    with open(os.path.join(folder, "live-harness.html"), "w") as f:
+        f.write(HARNESS)
+    return folder
+
+
+class Tab(web_page.StagePage):
+    """One Chromium on llvmpipe with the probes, on a local server over `root` (out/web's pages)."""
+
+    def __init__(self, args, root):
+        super().__init__(root, args.chromium, os.path.join(args.out, "chromium.log"), cdp.RENDERERS["llvmpipe"],
                          None, (PROBES,))
 
     def load(self, stage, query):
@@ -251,9 +299,9 @@ def check_wheel(tab):
     fov = tab.js("Module.t10Drawn ? Module.t10Drawn().fov : null")
     for delta, notches, expect in ((100, 1, 2.0), (-100, 3, -6.0)):
         frames = int(tab.state()["frames"])
-        for _ in range(notches):
-            tab.js(f"document.getElementById('canvas').dispatchEvent(new WheelEvent('wheel', "
-                   f"{{deltaY: {delta}, deltaMode: 0, bubbles: true, cancelable: true}}))")
+        # All in one task, so that one frame shows them all.
+        tab.js(f"for (let i = 0; i < {notches}; ++i) document.getElementById('canvas').dispatchEvent("
+               f"new WheelEvent('wheel', {{deltaY: {delta}, deltaMode: 0, bubbles: true, cancelable: true}}))")
         try:
             settle(tab, f"a frame after {notches} notch(es) of the wheel",
                    lambda s: s["state"] == "rendered" and int(s["frames"]) > frames, 5)
@@ -283,6 +331,37 @@ def check_readback(tab):
     return problems
 
 
+def check_quick_changes(tab):
+    """The site's embed: quick changes are applied in order, the last one wins, the status names it."""
+    # Before (live.js at 7296bec, each change re-queued on its own 50 ms timer), 4 runs of 4: "the control
+    # shows 0, the frame was drawn with ['--blur-passes=1'], the status says '--blur-passes 1: frame 9 drawn.'"
+    tab.open("live-harness.html")
+    cdp.wait_until(lambda: tab.js("typeof t10Live"), lambda v: v == "object", 10, "live.js loaded")
+    tab.js("t10Live.start('extras')")
+    embed = cdp.wait_until(lambda: json.loads(tab.js(EMBED)), lambda e: e["state"] in ("rendered", "error"), 30,
+                           "the embed drew its first frame")
+    values = ["3", "1", "4", "2", "5", "1", "3", "0"]
+    problem = tab.js(f"{QUICK_CHANGES}('blur-passes', {json.dumps(values)}, 23)")
+    time.sleep(len(values) * 0.023)
+    if problem:
+        return [f"live.js: {problem}"]
+    # Settled: the embed rendered, and no change is still queued (live.js at 7296bec re-queued on 50 ms
+    # timers: looked at again 0.5 s later).
+    first = embed["frames"]
+    done = lambda e: e["state"] == "rendered" and e["page"] == "rendered" and e["frames"] > first
+    for pause in (0.5, 0):
+        embed = cdp.wait_until(lambda: json.loads(tab.js(EMBED)), done, 30, "the embed settled after the changes")
+        time.sleep(pause)
+    drawn = [a for a in embed["drawn"] or [] if a.startswith("--blur-passes=")]
+    shown = tab.js("document.querySelector('[data-option=\"blur-passes\"]:not(label)').value")
+    print(f"live.js: blur passes {', '.join(values)} 23 ms apart: the control shows {shown}, the frame was drawn with "
+          f"{drawn[-1:] or 'the default'}, the status says {embed['status']!r}", flush=True)
+    if shown != "0" or drawn[-1:] != ["--blur-passes=0"] or "--blur-passes 0" not in embed["status"]:
+        return [f"live.js: after blur passes {values} 23 ms apart the control shows {shown}, the frame was drawn with "
+                f"{drawn[-1:] or embed['drawn']}, the status says {embed['status']!r}"]
+    return []
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--web", required=True, help="the built pages (out/web)")
@@ -291,6 +370,8 @@ def main():
     ap.add_argument("--queries", choices=["all", "quick"], help="which hostile queries (none without)")
     ap.add_argument("--faults", action="store_true", help="check each fault the issue found")
     ap.add_argument("--chromium", default="chromium")
+    ap.add_argument("--live-js", default=os.path.join(BUILD_ROOT, "site", "assets", "js", "live.js"),
+                    help="the site's embed script (--faults)")
     args = ap.parse_args()
     if not shutil.which(args.chromium):
         print(f"SKIP: {args.chromium}: not found (apt-get install chromium)", file=sys.stderr)
@@ -299,11 +380,13 @@ def main():
         page_folder(args.web, stage)
     os.makedirs(args.out, exist_ok=True)
     started = time.monotonic()
-    tab = Tab(args)
+    scratch = tempfile.TemporaryDirectory(prefix="t10-embeds-")
+    tab = Tab(args, served_root(args.web, args.live_js, scratch.name))
     problems = []
     try:
         if args.faults:
-            for check in (check_help, check_refusals, check_live_changes, check_wheel, check_readback):
+            for check in (check_help, check_refusals, check_live_changes, check_wheel, check_readback,
+                          check_quick_changes):
                 try:
                     problems += check(tab)
                 except Failure as failure:  # a wait that ran out: the check failed, the others still run
@@ -314,6 +397,7 @@ def main():
                 problems += check_query(tab, stage, query)
     finally:
         tab.close()
+        scratch.cleanup()
     print(f"finished in {time.monotonic() - started:.1f} s", flush=True)
     if problems:
         raise Failure(f"{len(problems)} problem(s):\n  " + "\n  ".join(problems))

@@ -231,7 +231,12 @@ void WebPage::wheel(double notches) {
 
 std::string WebPage::set(const std::string& name, const std::string& value) {
     const Stage& stage = app_.stage_;
-    std::vector<std::string> args = args_;
+    // The last of a name wins (the parser's policy), so an earlier one can go: a slider moved a
+    // thousand times leaves one argument.
+    std::vector<std::string> args;
+    for (const std::string& arg : args_) {
+        if (arg != "--" + name && arg.rfind("--" + name + "=", 0) != 0) args.push_back(arg);
+    }
     args.push_back(value.empty() ? "--" + name : "--" + name + "=" + value);
     Settings next;
     std::string message;
