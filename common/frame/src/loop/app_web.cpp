@@ -7,7 +7,7 @@
 // the text on the page), t10Frames = frames drawn. "rendered" is set once the GPU has finished the
 // frame (a one-pixel readback), so that a page's first-frame time includes the drawing. A change that
 // fails (Module.t10Set, or a frame drawn after it) puts the last settings that drew a frame back and
-// says why (dataset.t10Notice); only a page that never drew a frame ends in "error".
+// says why (dataset.t10Notice); a page ends in "error" only with no earlier settings that drew a frame.
 // The page (common/platform/web/index.html.in) turns its URL's query into argv.
 #include "t10/app.hpp"
 
