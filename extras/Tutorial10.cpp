@@ -42,6 +42,7 @@ namespace loc = t10::contract::extras;
 
 // [step 40] std::isfinite for the scene key check, read back a few frames late; the exact key
 // (--key exact)
+#include "t10/browser_limits.hpp"
 #include "t10/exact_key.hpp"
 #include "t10/readback.hpp"
 
@@ -595,7 +596,9 @@ void GL_AddOptions(CLI::App& cli)
            "--key", [](const std::string& strKey) { g_bExactKey = strKey == "exact"; },
            "Step 40: mip (the 1x1 level of the mip chain, the default) or exact (the mean of every pixel, "
            "computed on the GPU; the mip chain is inexact at odd sizes)")
-        ->check(CLI::IsMember({"mip", "exact"}));
+        ->check(CLI::IsMember({"mip", "exact"}))
+        // a compute reduction: the browser build refuses it by name (and offers no control for it)
+        ->check(t10::refusedInBrowser("exact", "WebGL 2 has no compute shaders, which the exact key is"));
     // [/step 40]
     cli.footer("Keys in the window (besides WASD, Q/E, Shift, the right mouse button, scroll and Esc):\n"
                "  Up / Down          white point Yw x1.25 / /1.25 (step 37)\n"

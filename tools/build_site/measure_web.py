@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Measures the web stages (make web: out/web/<stage>/) for the site: the time from opening each
 stage's page to its first drawn frame (document.body.dataset.t10 turning "rendered", read with a
-MutationObserver installed before the page's own scripts), in headless Chromium drawing WebGL2 with
+MutationObserver installed before the page's own scripts; the page sets it after a one-pixel readback
+of the frame, so the time includes the GPU's drawing, not only the calls that queue it: issue 50), in headless Chromium drawing WebGL2 with
 ANGLE on SwiftShader (Chromium's software renderer), served from 127.0.0.1 with the browser cache
 off; the median of --runs loads per stage.
 Writes a JSON file that build_site.py reads (web_stages.py) and prints one line per stage.

@@ -109,6 +109,9 @@
       // list their default first ("r16 ... (the default) or r16f").
       if (option.type === "choice" && !option.value) option.value = option.choices[0];
       if (option.type === "choice" && !option["default"]) option["default"] = option.choices[0];
+      // Only the choices the page can honour are listed (extras' --key without exact in a browser):
+      // one left is nothing to choose.
+      if (option.type === "choice" && option.choices.length < 2) return;
       option.value = String(option.value);
       out.push(option);
     });
@@ -205,6 +208,30 @@
     return row;
   }
 
+  // A control shows `value` (a refused change puts the accepted one back).
+  function showValue(input, value) {
+    if (input.type === "checkbox") input.checked = isOn(value);
+    else input.value = value;
+    var shown = input.parentNode && input.parentNode.querySelector("output");
+    if (shown) shown.textContent = value;
+  }
+
+  // "Frame 7 drawn with --white-point 0.32 --blur-passes 0.": the page's record of its last frame,
+  // the controls' options among its arguments (the last of each name, as the parser takes them).
+  function drawnWith(frame, list) {
+    var drawn = frame.contentWindow.Module.t10Drawn();
+    var names = {}, given = {}, order = [];
+    list.forEach(function (option) { names[option.name] = true; });
+    (drawn.args || []).forEach(function (arg) {
+      var m = /^--([^=]+)(?:=(.*))?$/.exec(arg);
+      if (!m || !names[m[1]]) return;
+      if (!(m[1] in given)) order.push(m[1]);
+      given[m[1]] = m[2] === undefined ? "" : m[2];
+    });
+    var text = order.map(function (name) { return "--" + name + (given[name] ? " " + given[name] : ""); }).join(" ");
+    return "Frame " + drawn.frames + " drawn with " + (text || "the defaults") + ".";
+  }
+
   function buildControls(live, frame) {
     var box = live.querySelector(".live-controls");
     if (!box) return;
@@ -213,28 +240,34 @@
     catch (e) { box.textContent = "The page's option list could not be read: " + e; return; }
     var status = document.createElement("p");
     status.className = "live-control-status";
-    var busy = false;
+    // Each change is handed to the page at once, in the order the reader makes them (the page
+    // rebuilds the stage inside t10Set), so the last one wins; one wait covers the changes made
+    // meanwhile, and the status line then names what the frame was drawn with (Module.t10Drawn).
+    var waiting = false;
+    var accepted = {};
+    list.forEach(function (option) { accepted[option.name] = option.value; });
     function apply(name, value, input) {
-      if (busy) { setTimeout(function () { apply(name, value, input); }, POLL_MS); return; }
       var body = pageOf(frame);
+      if (!body) return;
       var before = Number(body.dataset.t10Frames || 0);
       var error = frame.contentWindow.Module.t10Set(name, value);
       if (error) {
-        status.textContent = error;
+        // Refused: the frame and the control keep the value the page drew with.
+        showValue(input, accepted[name]);
+        status.textContent = error.replace(/\nRun with --help.*$/, "") + " The frame keeps --" + name + " " + accepted[name] + ".";
         status.className = "live-control-status live-control-error";
         return;
       }
-      busy = true;
+      accepted[name] = value;
+      if (waiting) return;
+      waiting = true;
       live.setAttribute("data-state", "loading");
       waitFor(frame, before, function (state, page) {
-        busy = false;
-        if (state === "rendered") {
-          status.className = "live-control-status";
-          status.textContent = "--" + name + " " + value + ": frame " + page.dataset.t10Frames + " drawn.";
-          live.setAttribute("data-state", "rendered");
-        } else {
-          failed(live, frame, state, page);
-        }
+        waiting = false;
+        if (state !== "rendered") return failed(live, frame, state, page);
+        status.className = "live-control-status" + (page.dataset.t10Notice ? " live-control-error" : "");
+        status.textContent = drawnWith(frame, list) + (page.dataset.t10Notice ? " " + page.dataset.t10Notice : "");
+        live.setAttribute("data-state", "rendered");
       });
     }
     list.forEach(function (option) {

@@ -3,10 +3,15 @@
 // start() builds the stage and registers frame(), which draws a frame only when one is due (the frames
 // the page asked for, a camera move, a setting changed through Module.t10Set) and tells the page
 // through document.body.dataset:
-// t10 = "loading" | "rendered" | "error" (the message in #t10-error), t10Frames = frames drawn.
+// t10 = "loading" | "rendered" | "error" (the message in #t10-error) | "answered" (--help, --version:
+// the text on the page), t10Frames = frames drawn. "rendered" is set once the GPU has finished the
+// frame (a one-pixel readback), so that a page's first-frame time includes the drawing. A change that
+// fails (Module.t10Set, or a frame drawn after it) puts the last settings that drew a frame back and
+// says why (dataset.t10Notice); a page ends in "error" only with no earlier settings that drew a frame.
 // The page (common/platform/web/index.html.in) turns its URL's query into argv.
 #include "t10/app.hpp"
 
+#include "t10/browser_limits.hpp"
 #include "t10/error.hpp"
 #include "t10/outputs.hpp"
 
@@ -16,7 +21,9 @@
 #include <emscripten.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -26,6 +33,10 @@ EM_JS(void, t10PageState, (const char* state, int frames), {
     document.body.dataset.t10 = UTF8ToString(state);
 });
 EM_JS(void, t10PageError, (const char* message), { Module["t10ShowError"](UTF8ToString(message)); });
+// --help and --version: the text the binary prints, on the page (dataset.t10 = "answered").
+EM_JS(void, t10PageText, (const char* text), { Module["t10ShowText"](UTF8ToString(text)); });
+// A change that was not applied (the last good settings drew again): "" clears it.
+EM_JS(void, t10PageNotice, (const char* message), { document.body.dataset.t10Notice = UTF8ToString(message); });
 
 namespace t10 {
 
@@ -36,27 +47,15 @@ namespace {
 WebPage* g_page = nullptr;
 const Stage* g_stage = nullptr;
 
-// The options that read or write files, time the GPU or drive tests: a page has no files to give
-// them and WebGL 2 no timer queries. Returns the message refusing the first one given, or "".
-std::string unavailableOption(const Settings& s) {
-    const char* const kNoFiles = "is not available in the web build (the page reads only the files packaged with "
-                                 "it and writes none; read the frame from the canvas instead)";
-    if (!s.outputs.output.empty()) return std::string("--output ") + kNoFiles;
-    if (!s.outputs.exr.empty()) return std::string("--exr ") + kNoFiles + " (and OpenEXR has no WebAssembly build)";
-    if (!s.outputs.dumpDir.empty()) return std::string("--dump ") + kNoFiles;
-    if (!s.outputs.capturePassesDir.empty()) return std::string("--capture-passes ") + kNoFiles;
-    if (!s.scene.scene.empty()) return std::string("--scene ") + kNoFiles;
-    if (!s.scene.input.empty()) return std::string("--input ") + kNoFiles;
-    if (!s.scene.shaderDir.empty()) return std::string("--shader-dir ") + kNoFiles;
-    if (s.bench.frames > 0 || !s.bench.csv.empty())
-        return "--bench is not available in the web build (WebGL 2 has no GPU timer queries)";
-    if (!s.run.resizeSequence.empty()) return "--resize-sequence is not available in the web build";
-    return "";
-}
-
 // parseSettings with its messages caught: -1 and "" when the run goes on, else the exit code and
-// what the binary would have printed.
+// what the binary would have printed. Options a page cannot honour are refused by name before
+// parsing (so that ?input=/etc/passwd is "not available", not "does not exist"), and sizes and frame
+// counts beyond the browser's bounds after it (browser_limits.hpp).
 int parseCaptured(const std::vector<std::string>& args, const Stage& stage, Settings& settings, std::string& message) {
+    if (const std::string refused = browser::refusedByName(args); !refused.empty()) {
+        message = std::string(stage.name) + ": error: " + refused;
+        return 2;
+    }
     std::vector<const char*> argv{stage.name};
     for (const std::string& arg : args) argv.push_back(arg.c_str());
     std::ostringstream err;
@@ -69,11 +68,13 @@ int parseCaptured(const std::vector<std::string>& args, const Stage& stage, Sett
     std::cout.rdbuf(oldOut);
     message = parsed == 0 ? out.str() : err.str();
     if (parsed < 0) {
-        if (const std::string refused = unavailableOption(settings); !refused.empty()) {
-            message = std::string(stage.name) + ": error: " + refused + "\n";
+        if (const std::string beyond = browser::beyondBounds(settings); !beyond.empty()) {
+            message = std::string(stage.name) + ": error: " + beyond;
             return 2;
         }
     }
+    // --help (more than the version's one line) says what differs in the browser.
+    if (parsed == 0 && std::count(message.begin(), message.end(), '\n') > 1) message += browser::helpNote();
     while (!message.empty() && message.back() == '\n') message.pop_back();
     return parsed;
 }
@@ -90,6 +91,30 @@ CameraState cameraState(const Camera& camera) {
     return {camera.position(), camera.yawDegrees(), camera.pitchDegrees(), camera.fovDegrees()};
 }
 
+// The choices CLI11's type text lists for `option` ("TEXT:{mip,exact}") that its checks accept here:
+// extras' --key without exact in the browser (refusedInBrowser), so that no control offers it.
+nlohmann::json honouredChoices(CLI::Option& option) {
+    nlohmann::json choices = nlohmann::json::array();
+    const std::string type = option.get_type_name();
+    const std::size_t open = type.find('{');
+    const std::size_t close = type.find('}', open);
+    if (open == std::string::npos || close == std::string::npos) return choices;
+    std::istringstream list(type.substr(open + 1, close - open - 1));
+    for (std::string choice; std::getline(list, choice, ',');) {
+        bool accepted = true;
+        try {
+            for (int i = 0; accepted; ++i) {
+                std::string value = choice;
+                accepted = (*option.get_validator(i))(value).empty();
+            }
+        } catch (const CLI::OptionNotFound&) {
+            // past the last check
+        }
+        if (accepted) choices.push_back(choice);
+    }
+    return choices;
+}
+
 } // namespace
 
 // The page's App and what the browser's loop keeps between its calls (a friend of App: it drives the
@@ -100,27 +125,43 @@ public:
         : app_(stage, settings, context), args_(std::move(args)) {}
     // Builds the stage and hands frame() to the browser's loop.
     void start();
-    // Called once per animation frame; draws a frame only when something asked for one.
+    // Called once per animation frame; draws a frame only when something asked for one (the frames
+    // the page or a change asked for, a camera or a view that differs from the last frame's).
     void frame();
     // Module.t10Set(name, value): the command line `args` (the page's, plus every setting made
-    // since) parsed again with `--name value` appended; "" or the message the binary would print.
+    // since) parsed again with `--name value` appended and applied at once (the stage rebuilt), so
+    // that changes apply in the order they are made and the last one wins; "" or the message the
+    // binary would print, the page's settings then as they were.
     std::string set(const std::string& name, const std::string& value);
-    // Module.t10Options(): the stage's options as JSON (names, types, ranges, current values).
+    // Module.t10Options(): the stage's options as JSON (names, types, ranges, choices the page can
+    // honour, current values).
     std::string options() const;
     // The page's other services (page_hooks.hpp).
     App& app() { return app_; }
     void rebuildStage();
     void requestFrame();
     std::string applyArguments(const std::vector<std::string>& more);
+    // Module.t10Drawn(): what the last frame was drawn with (JSON: frames, args, view, fov).
+    std::string drawn() const;
+    // The mouse wheel, in notches (positive: towards the user, which zooms out), from the page.
+    void wheel(double notches);
+    // A frame failed: the last settings that drew a frame are put back and drawn again, the message
+    // kept as the page's notice. False when there are none (the page never drew a frame).
+    bool recover(const std::string& message);
 
 private:
     std::string apply(const Settings& next); // set()'s second half: rebuild what changed
+    void restoreStageOptions();              // the stage's own options (globals) as args_ says
+    void finishGpu();                        // waits until the GPU has drawn the frame
 
     App app_;
     std::vector<std::string> args_; // argv[1..] as the page gave it, then each t10Set
+    std::optional<std::vector<std::string>> good_; // the args of the last frame drawn
     int pending_ = 0;               // frames still to draw before the page is "rendered"
     int drawn_ = 0;                 // frames drawn so far (dataset.t10Frames)
     double last_ = 0.0;             // the last frame()'s time, for the camera keys' speed
+    std::optional<CameraState> drawnCamera_; // the camera and view of the last frame
+    View drawnView_ = View::Final;
 };
 
 namespace {
@@ -129,9 +170,10 @@ void frameLoop(void*) {
     try {
         g_page->frame();
     } catch (const std::exception& error) {
-        emscripten_cancel_main_loop();
         const std::string message = std::string(g_stage->name) + ": error: " + error.what();
         std::cerr << message << "\n";
+        if (g_page->recover(message)) return;
+        emscripten_cancel_main_loop();
         t10PageError(message.c_str());
     }
 }
@@ -153,19 +195,24 @@ void WebPage::frame() {
     const double now = emscripten_get_now();
     const double elapsed = (now - last_) / 1000.0;
     last_ = now;
-    const CameraState before = cameraState(app_.camera_);
     if (app_.input_ != nullptr) app_.input_->update(elapsed);
-    const View viewBefore = app_.views_->current();
     if (app_.viewKeys_ != nullptr) app_.viewKeys_->update(*app_.views_);
-    if (cameraState(app_.camera_) != before || app_.views_->current() != viewBefore) pending_ = std::max(pending_, 1);
+    // Compared with the last frame's, not with the state before update(): the wheel moves the camera
+    // between two calls.
+    if (drawnCamera_ && (cameraState(app_.camera_) != *drawnCamera_ || app_.views_->current() != drawnView_))
+        pending_ = std::max(pending_, 1);
     if (pending_ == 0 || app_.width_ == 0 || app_.height_ == 0) return;
     const double start = emscripten_get_now();
     app_.renderFrame();
     app_.views_->draw(*app_.quad_, app_.width_, app_.height_);
-    app_.frameTimeMs_ = emscripten_get_now() - start;
     app_.checkGlErrors("in frame " + std::to_string(drawn_));
+    drawnCamera_ = cameraState(app_.camera_);
+    drawnView_ = app_.views_->current();
     ++drawn_;
     --pending_;
+    if (pending_ == 0) finishGpu();
+    app_.frameTimeMs_ = emscripten_get_now() - start;
+    good_ = args_;
     t10PageState(pending_ == 0 ? "rendered" : "loading", drawn_);
 }
 
@@ -188,41 +235,94 @@ std::string WebPage::applyArguments(const std::vector<std::string>& more) {
     return apply(next);
 }
 
+void WebPage::finishGpu() {
+    // WebGL returns from the draw calls at once; a readback of one pixel of the frame returns once
+    // everything before it is drawn. The bindings it changes are put back.
+    GLint readFramebuffer = 0;
+    GLint packBuffer = 0;
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+    glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    unsigned char pixel[4] = {};
+    glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(readFramebuffer));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(packBuffer));
+}
+
+void WebPage::wheel(double notches) {
+    // Camera::zoom's steps are the desktop GLFW's: positive away from the user, narrowing the view.
+    app_.camera_.zoom(static_cast<float>(-notches));
+}
+
 std::string WebPage::set(const std::string& name, const std::string& value) {
     const Stage& stage = app_.stage_;
-    std::vector<std::string> args = args_;
+    // The last of a name wins (the parser's policy), so an earlier one can go: a slider moved a
+    // thousand times leaves one argument.
+    std::vector<std::string> args;
+    for (const std::string& arg : args_) {
+        if (arg != "--" + name && arg.rfind("--" + name + "=", 0) != 0) args.push_back(arg);
+    }
     args.push_back(value.empty() ? "--" + name : "--" + name + "=" + value);
     Settings next;
     std::string message;
     const int parsed = parseCaptured(args, stage, next, message);
     if (parsed >= 0) {
-        // Put back what the stage's own options held (a failed parse may have set some of them).
-        Settings previous;
-        std::string ignored;
-        parseCaptured(args_, stage, previous, ignored);
+        restoreStageOptions(); // a failed parse may have set some of them
         return message.empty() ? "--" + name + ": not applied" : message;
     }
-    // A value the parser accepts may still be refused when applied (an unknown --camera): then
-    // everything is put back as it was and the message returned; the page keeps its frame.
+    // A value the parser accepts may still be refused when applied (an unknown --camera, a shader the
+    // stage cannot build): then everything is put back as it was and the message returned; the page
+    // keeps its frame.
     const std::vector<std::string> previousArgs = std::exchange(args_, std::move(args));
     const Settings previous = app_.settings_;
+    std::string refused;
     try {
-        return apply(next);
-    } catch (const UsageError& error) {
-        args_ = previousArgs;
-        app_.settings_ = previous;
-        Settings restored;
-        std::string ignored;
-        parseCaptured(args_, stage, restored, ignored);
-        return std::string(stage.name) + ": error: " + error.what();
+        refused = apply(next);
+    } catch (const std::exception& error) {
+        refused = std::string(stage.name) + ": error: " + error.what();
     }
+    if (refused.empty()) {
+        t10PageNotice("");
+        return "";
+    }
+    args_ = previousArgs;
+    restoreStageOptions();
+    apply(previous); // what drew before draws again (a failure here is the page's error)
+    return refused;
+}
+
+void WebPage::restoreStageOptions() {
+    Settings restored;
+    std::string ignored;
+    parseCaptured(args_, app_.stage_, restored, ignored);
+}
+
+bool WebPage::recover(const std::string& message) {
+    if (!good_ || *good_ == args_) return false;
+    args_ = *good_;
+    Settings restored;
+    std::string ignored;
+    if (parseCaptured(args_, app_.stage_, restored, ignored) >= 0) return false;
+    try {
+        apply(restored);
+    } catch (const std::exception&) {
+        return false;
+    }
+    t10PageNotice(("not applied: " + message).c_str());
+    return true;
 }
 
 std::string WebPage::apply(const Settings& next) {
     Settings& settings = app_.settings_;
+    const std::string viewBefore = settings.views.view;
+    if (next.views.view != viewBefore && !app_.views_->available(*findView(next.views.view))) {
+        std::string names;
+        for (View view : app_.views_->availableViews()) names += (names.empty() ? "" : ", ") + std::string(viewName(view));
+        return "--view " + next.views.view + ": this stage has no " + next.views.view + " (its views: " + names + ")";
+    }
     const bool sizeChanged = next.context.width != settings.context.width || next.context.height != settings.context.height;
     const bool cameraChanged = next.scene.camera != settings.scene.camera;
-    const std::string viewBefore = settings.views.view;
     settings = next;
     if (cameraChanged) {
         app_.loadScene(true);
@@ -232,10 +332,12 @@ std::string WebPage::apply(const Settings& next) {
         app_.context_.requestSize(next.context.width, next.context.height);
         app_.resize(next.context.width, next.context.height);
     } else {
-        app_.requestRebuild(); // the stage's own settings (extras') are read again by GL_Init
+        // The stage's own settings (extras') are read again by GL_Init, now, so that a setting it
+        // cannot build is refused by t10Set rather than by a later frame.
+        app_.quitStage();
+        app_.buildStage();
     }
-    if (settings.views.view != viewBefore && !app_.views_->select(*findView(settings.views.view)))
-        return "--view " + settings.views.view + ": this stage has no such view";
+    if (settings.views.view != viewBefore) app_.views_->select(*findView(settings.views.view));
     app_.views_->showThumbnails(settings.views.thumbnails);
     pending_ = std::max(pending_, settings.run.frames > 0 ? settings.run.frames : 1);
     t10PageState("loading", drawn_);
@@ -254,7 +356,7 @@ std::string WebPage::options() const {
             eq == std::string::npos ? "" : arg.substr(eq + 1);
     }
     nlohmann::json options = nlohmann::json::array();
-    auto describe = [&](const CLI::Option* option, const std::string& group) {
+    auto describe = [&](CLI::Option* option, const std::string& group) {
         // The option's long name ("no-bloom" for CLI11's "--no-bloom{false}"); a short-only option or
         // the help flag is not a setting.
         const std::vector<std::string> longNames = option->get_lnames();
@@ -267,11 +369,12 @@ std::string WebPage::options() const {
                              {"type", option->get_type_name()},
                              {"default", option->get_default_str()}};
         if (const auto it = given.find(name); it != given.end()) entry["value"] = it->second;
+        if (const nlohmann::json choices = honouredChoices(*option); !choices.empty()) entry["choices"] = choices;
         options.push_back(entry);
     };
-    for (const CLI::Option* option : cli.get_options()) describe(option, "");
-    for (const CLI::App* group : cli.get_subcommands({})) {
-        for (const CLI::Option* option : group->get_options()) describe(option, group->get_group());
+    for (CLI::Option* option : cli.get_options()) describe(option, "");
+    for (CLI::App* group : cli.get_subcommands({})) {
+        for (CLI::Option* option : group->get_options()) describe(option, group->get_group());
     }
     nlohmann::json views = nlohmann::json::array();
     for (View view : app_.views_->availableViews()) views.push_back(viewName(view));
@@ -301,6 +404,16 @@ void fail(const std::string& message) {
 
 } // namespace page
 
+std::string WebPage::drawn() const {
+    nlohmann::json args = nlohmann::json::array();
+    if (good_) args = *good_;
+    return nlohmann::json{{"frames", drawn_},
+                          {"args", args},
+                          {"view", viewName(drawnView_)},
+                          {"fov", drawnCamera_ ? drawnCamera_->fov : app_.camera_.fovDegrees()}}
+        .dump();
+}
+
 int runStage(int argc, const char* const* argv, const Stage& stageInMain) {
     // main()'s Stage ends when main() returns, before the browser calls the loop: a copy stays.
     const Stage& stage = *new Stage(stageInMain);
@@ -312,6 +425,7 @@ int runStage(int argc, const char* const* argv, const Stage& stageInMain) {
     if (parsed >= 0) {
         std::cerr << message << "\n";
         if (parsed != 0) t10PageError(message.c_str());
+        else t10PageText(message.c_str());
         return parsed;
     }
     try {
@@ -332,8 +446,8 @@ int runStage(int argc, const char* const* argv, const Stage& stageInMain) {
 
 } // namespace t10
 
-// The page's entry points (Module.t10Set and Module.t10Options wrap them; the strings they return
-// live until the next call).
+// The page's entry points (Module.t10Set, t10Options, t10Drawn and the page's wheel listener wrap
+// them; the strings they return live until the next call).
 extern "C" {
 
 EMSCRIPTEN_KEEPALIVE const char* t10_set(const char* name, const char* value) {
@@ -346,6 +460,16 @@ EMSCRIPTEN_KEEPALIVE const char* t10_set(const char* name, const char* value) {
         t10PageError(result.c_str());
     }
     return result.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* t10_drawn() {
+    static std::string result;
+    result = t10::g_page != nullptr ? t10::g_page->drawn() : "{}";
+    return result.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE void t10_wheel(double notches) {
+    if (t10::g_page != nullptr) t10::g_page->wheel(notches);
 }
 
 EMSCRIPTEN_KEEPALIVE const char* t10_options() {
