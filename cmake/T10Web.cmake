@@ -113,4 +113,63 @@ function(t10_web_stage target folder)
     set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged})
     set(T10_WEB_STAGE ${target})
     configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${out}/index.html @ONLY)
+    t10_web_editor(${target} ${out})
+endfunction()
+
+# The shader editor of the pages (issue 52: the stage page with ?edit=1, and the site's embeds, which
+# copy the same files through tools/build_site): CodeMirror 5 from Debian's libjs-codemirror, and the
+# editor's own files (common/platform/web/editor.js and .css), copied into
+# T10_WEB_OUTPUT_DIR/editor/, shared by every stage's page. Without CodeMirror the pages still build;
+# their editor says which package is missing.
+set(T10_CODEMIRROR_DIR /usr/share/javascript/codemirror CACHE PATH "CodeMirror 5 (Debian: libjs-codemirror)")
+set(t10_web_editor_dir ${T10_WEB_OUTPUT_DIR}/editor)
+foreach(file editor.js editor.css)
+    configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/${file} ${t10_web_editor_dir}/${file} COPYONLY)
+endforeach()
+set(t10_codemirror_files lib/codemirror.js lib/codemirror.css mode/clike/clike.js)
+foreach(file IN LISTS t10_codemirror_files)
+    if(EXISTS ${T10_CODEMIRROR_DIR}/${file})
+        get_filename_component(name ${file} NAME)
+        configure_file(${T10_CODEMIRROR_DIR}/${file} ${t10_web_editor_dir}/codemirror/${name} COPYONLY)
+    else()
+        message(WARNING "web build: ${T10_CODEMIRROR_DIR}/${file} not found, so the pages' shader editor "
+                        "will say it is missing (Debian: libjs-codemirror; or set T10_CODEMIRROR_DIR)")
+        break()
+    endif()
+endforeach()
+
+# t10_web_editor(<target> <out>): where the stage's editor starts, as `make student` starts a part: the
+# shaders of the stage before it in T10_STAGES (Part 0's for Part 1, ...), copied into <out>/start/
+# and listed in <out>/edit.json with the stage's part ("part1": the folder student/part1/ the editor's
+# download is named after). A stage with none before it (Part 0, a student's own folder) starts from
+# its own shaders.
+function(t10_web_editor target out)
+    list(FIND T10_STAGES ${target} index)
+    set(start "")
+    if(index GREATER 0)
+        math(EXPR previous "${index} - 1")
+        list(GET T10_STAGES ${previous} start)
+    endif()
+    set(part ${target})
+    if(target MATCHES "(^|_)(part[0-9])($|_)")
+        set(part ${CMAKE_MATCH_2})
+    endif()
+    file(REMOVE_RECURSE ${out}/start)
+    set(files "")
+    if(start)
+        file(GLOB shaders CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${start}/*.vert ${PROJECT_SOURCE_DIR}/${start}/*.frag)
+        foreach(shader IN LISTS shaders)
+            get_filename_component(name ${shader} NAME)
+            configure_file(${shader} ${out}/start/${name} COPYONLY)
+            list(APPEND files "\"${name}\"")
+        endforeach()
+        list(JOIN files ", " files)
+        set(start "\"${start}\"")
+    else()
+        set(start null)
+    endif()
+    file(CONFIGURE OUTPUT ${out}/edit.json
+         CONTENT "{\"stage\": \"${target}\", \"part\": \"${part}\", \"start\": ${start}, \"files\": [${files}]}\n")
+    target_link_options(${target} PRIVATE "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/platform/web/edit_page.js")
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/common/platform/web/edit_page.js)
 endfunction()
