@@ -19,6 +19,8 @@ SwiftShader), driven as a reader drives it (its buttons and its text, through th
   7. the download is a .zip of part1/PostProcess.frag and part1/PostProcessInit.frag with the editor's
      text, and uploading a file through the upload input puts it into the editor;
   8. after a reload the embed's editor opens with the work as it was left (localStorage).
+With --axe AXE.JS, axe-core (axe_test.py's WCAG 2.1 A and AA rules) runs on the page with the editor open
+and its error listed (step 5), at --width in both schemes: 0 violations.
 Screenshots of the editor at each step go into --out (editor-*.png).
 
 It can fail: each frame comparison is made against a frame the same run measured, so an editor whose
@@ -38,6 +40,7 @@ import time
 sys.dont_write_bytecode = True
 from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
 from web.cdp import Failure, evaluate, screenshot  # noqa: E402
+import axe_test  # noqa: E402  (axe-core in the page, for --axe)
 
 SKIP = 77
 REC709 = "vec3(0.2126f, 0.7152f, 0.0722f)"
@@ -169,6 +172,7 @@ def main():
     ap.add_argument("--chromium", default="chromium")
     ap.add_argument("--out", required=True)
     ap.add_argument("--need-embeds", action="store_true", help="fail (not skip) when the site has no web stage")
+    ap.add_argument("--axe", help="axe.min.js: check the page with the editor open too")
     ap.add_argument("--min-changed", type=float, default=0.2,
                     help="the share of pixels the mistake must change (Rec. 601 weights move the key by about "
                          "a tenth, which changes most lit pixels by more than 4 of 255)")
@@ -271,6 +275,13 @@ def main():
         print(f"5. syntax error: {s['errors'][:1]}; the last good frame stays", flush=True)
         run.shot("5-error")
         broken_text = run.text()
+        if args.axe:
+            run.js("window.__axeSource = " + json.dumps(axe_test.read_axe(args.axe)) + "; 0")
+            findings = axe_test.Findings()
+            axe_test.check_loaded(browser, session, [args.width], "the editing embed", findings)
+            findings.write(args.out, "axe")
+            expect(not findings.total, str(findings.failure()))
+            print(f"   axe-core with the editor open: {findings.runs} runs, {findings.total} violating node(s)", flush=True)
 
         # 6. A loop the page cannot bound is refused at its line.
         run.select("PostProcessInit.frag")

@@ -337,7 +337,7 @@
     var host = element("div", { className: "t10-editor-text" });
     box.insertBefore(host, this.status);
     this.cm = CodeMirror(host, {
-      value: "", lineNumbers: true, indentUnit: 4, tabSize: 4, viewportMargin: Infinity,
+      value: "", lineNumbers: true, lineWrapping: true, indentUnit: 4, tabSize: 4, viewportMargin: Infinity,
       screenReaderLabel: "Shader source", extraKeys: {
         "Tab": function (cm) { if (self.escaped) return CodeMirror.Pass; if (cm.somethingSelected()) cm.indentSelection("add"); else cm.replaceSelection("    "); },
         "Shift-Tab": function (cm) { if (self.escaped) return CodeMirror.Pass; cm.indentSelection("subtract"); },
