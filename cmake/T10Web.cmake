@@ -105,12 +105,14 @@ function(t10_web_stage target folder)
         "SHELL:--exclude-file *.cpp --exclude-file *.md --exclude-file *.txt"
         "SHELL:--preload-file ${folder}@${T10_WEB_ROOT}/${target}"
         "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/shaders@${T10_COMMON_SHADER_DIR_VALUE}"
-        "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/assets@${T10_ASSET_DIR_VALUE}")
+        "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/assets@${T10_ASSET_DIR_VALUE}"
+        # The page's shader editing and check (Module.t10Shaders, t10SetShader): workbench.js beside the page.
+        "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/platform/web/workbench.js")
     # Relinked when a packaged file changes. A glob, where the project lists files: what is packaged is
     # whole folders (a student's folder too), and the list only decides when to relink.
     file(GLOB_RECURSE packaged CONFIGURE_DEPENDS ${folder}/*.vert ${folder}/*.frag ${PROJECT_SOURCE_DIR}/common/shaders/*
          ${PROJECT_SOURCE_DIR}/common/assets/*)
-    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged})
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged} ${PROJECT_SOURCE_DIR}/common/platform/web/workbench.js)
     set(T10_WEB_STAGE ${target})
     configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${out}/index.html @ONLY)
     t10_web_editor(${target} ${out})

@@ -125,6 +125,23 @@ t10_add_web_test("tutorial10_part3_gaussian on SwiftShader matches its golden" g
                  --name part3-swiftshader --renderer swiftshader --tolerance ${GOLDENS}/web-swiftshader.tolerance
                  --golden tutorial10_part3_gaussian --reject tutorial10_part2_bloom)
 
+# The page's workbench contract (tests/web/workbench_test.py): Parts 1-3 in one Chromium, one page load
+# each; Module.t10Shaders lists the stage's files, t10SetShader answers errors on the student's line
+# and keeps the last good program drawing, a wrong edit leaves the golden and the reference's own files
+# bring it back. About 11 s alone on two cores.
+set(workbench_test "web: Module.t10SetShader on Parts 1-3: errors on the student's line, the reference's shaders match the goldens")
+set(cases "")
+foreach(stage ${parts})
+    if(NOT stage STREQUAL "tutorial10_part0_start")
+        list(APPEND cases --case ${stage})
+    endif()
+endforeach()
+add_test(NAME "${workbench_test}"
+         COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/web/workbench_test.py
+                 --web ${T10_WEB_PAGES} --chromium ${T10_CHROMIUM} --imgcompare $<TARGET_FILE:imgcompare>
+                 --goldens ${GOLDENS} --source ${PROJECT_SOURCE_DIR} --out ${WEB_OUT}/workbench ${cases})
+set_tests_properties("${workbench_test}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77)
+
 # A browser without float render targets gets the message, not a black canvas.
 t10_add_web_test("without EXT_color_buffer_float the page says so" nofloat tutorial10_part1_tonemap)
 

@@ -10,6 +10,8 @@
 #include "t10/error.hpp"
 #include "t10/outputs.hpp"
 
+#include "page_hooks.hpp"
+
 #include <CLI/CLI.hpp>
 #include <emscripten.h>
 #include <nlohmann/json.hpp>
@@ -105,6 +107,10 @@ public:
     std::string set(const std::string& name, const std::string& value);
     // Module.t10Options(): the stage's options as JSON (names, types, ranges, current values).
     std::string options() const;
+    // The page's other services (page_hooks.hpp).
+    App& app() { return app_; }
+    void rebuildStage();
+    void requestFrame();
 
 private:
     std::string apply(const Settings& next); // set()'s second half: rebuild what changed
@@ -160,6 +166,16 @@ void WebPage::frame() {
     ++drawn_;
     --pending_;
     t10PageState(pending_ == 0 ? "rendered" : "loading", drawn_);
+}
+
+void WebPage::rebuildStage() {
+    app_.quitStage();
+    app_.buildStage();
+}
+
+void WebPage::requestFrame() {
+    pending_ = std::max(pending_, 1);
+    t10PageState("loading", drawn_);
 }
 
 std::string WebPage::set(const std::string& name, const std::string& value) {
@@ -253,6 +269,22 @@ std::string WebPage::options() const {
                           {"view", viewName(app_.views_->current())}}
         .dump();
 }
+
+namespace page {
+
+App* app() { return g_page != nullptr ? &g_page->app() : nullptr; }
+const Stage* stage() { return g_page != nullptr ? g_stage : nullptr; }
+void rebuildStage() { g_page->rebuildStage(); }
+void requestFrame() { g_page->requestFrame(); }
+
+void fail(const std::string& message) {
+    emscripten_cancel_main_loop();
+    g_page = nullptr;
+    std::cerr << message << "\n";
+    t10PageError(message.c_str());
+}
+
+} // namespace page
 
 int runStage(int argc, const char* const* argv, const Stage& stageInMain) {
     // main()'s Stage ends when main() returns, before the browser calls the loop: a copy stays.

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""The page's workbench contract (common/platform/web/workbench.js) driven in headless Chromium.
+
+usage: workbench_test.py --web OUT_WEB --out DIR --source ROOT --case STAGE [--case STAGE ...] [options]
+
+Each --case is a stage page loaded once at the goldens' settings (web_test.py's GOLDEN_QUERY), in one
+Chromium, and judged by the project's imgcompare against tests/golden/STAGE.png as web_test.py judges:
+  1. Module.t10Shaders() lists the stage folder's .vert and .frag files with the repository's text.
+  2. A syntax error on line L of PostProcess.frag (one the translator passes on, so WebGL's compiler
+     finds it) is answered {ok: false} with line L, the line of the student's file. The file is sent
+     with #version on line 1, where the translation puts its precisions and a `#line 2` on lines 2 and
+     3 of its text, so the same error is on line L + 2 of the translated text: a page that reported
+     the translated text's line fails here. The frame drawn before the edit stays: it still matches the golden.
+  3. A character GLSL lacks on line L2 (the translator's own error) is answered with line L2 too.
+  4. A wrong but valid edit (the white point Yw 1.0 instead of 0.22, step 9) is applied and redrawn:
+     the frame must no longer match the golden (the edits reach the frame; the comparison can fail).
+  5. The reference's own files through Module.t10SetShader: the frame matches the golden again.
+The first case also sends what must be refused, each with a clear message and the page still drawing:
+a file the stage does not have, a source over the translator's bound, bytes that are not UTF-8, a
+string with a lone surrogate, a source that is not text, and a program that compiles but does not link
+(the previous file is put back and the stage rebuilt with it).
+Exit 0: passed; 1: failed (what and why on stderr); 77: no page or no Chromium, said why.
+"""
+import argparse
+import json
+import os
+import shutil
+import sys
+import time
+
+sys.dont_write_bytecode = True
+import web_test  # noqa: E402  (beside this file: the page, the golden judgement, the query)
+from web import cdp  # noqa: E402
+
+Failure = cdp.Failure
+EDITED = "PostProcess.frag"  # every part has it; its tone map is the frame's last pass
+WHITE_POINT = ("const float fYwhite = 0.22f;", "const float fYwhite = 1.0f;")
+
+
+def set_shader(page, file, source):
+    """Module.t10SetShader(file, source) awaited; `source` is a str, or bytes sent as a Uint8Array."""
+    if isinstance(source, (bytes, bytearray)):
+        argument = f"new Uint8Array({json.dumps(list(source))})"
+    else:
+        argument = json.dumps(source)
+    return page.evaluate(f"Module.t10SetShader({json.dumps(file)}, {argument})", await_promise=True)
+
+
+def expect_error(answer, line, what):
+    if not isinstance(answer, dict) or answer.get("ok") is not False or not answer.get("errors"):
+        raise Failure(f"{what}: expected {{ok: false, errors}}, got {answer!r}")
+    first = answer["errors"][0]
+    print(f"  {what}: line {first['line']}: {first['message']}", flush=True)
+    if line is not None and first["line"] != line:
+        raise Failure(f"{what}: the error is on line {first['line']}, not on the file's line {line}: {answer!r}")
+    return first
+
+
+def still_drawing(args, page, stage, name):
+    """The page is still 'rendered' and its frame still matches the golden."""
+    state = page.state()
+    if state["state"] != "rendered":
+        raise Failure(f"after {name} the page is {state['state']!r}: {state['error']!r}{page.problems()}")
+    frame = os.path.join(args.out, f"{stage}-{name}.png")
+    page.capture(frame)
+    web_test.judge(args, frame, stage, [])
+
+
+def repository_shaders(args, stage):
+    folder = os.path.join(args.source, stage)
+    names = sorted(n for n in os.listdir(folder) if n.endswith((".vert", ".frag")))
+    return {n: open(os.path.join(folder, n), encoding="utf-8").read() for n in names}
+
+
+def check_listing(page, stage, expected):
+    listed = page.evaluate("Module.t10Shaders()")
+    got = {entry["file"]: entry["source"] for entry in listed or []}
+    if list(got) != list(expected) or got != expected:
+        raise Failure(f"Module.t10Shaders() lists {sorted(got)} (or other text), the folder has {sorted(expected)}")
+    print(f"  t10Shaders(): {', '.join(expected)}, the repository's text", flush=True)
+
+
+def check_errors(args, page, stage, source):
+    # The file without its header comment, so that #version is on line 1: then the translation's text
+    # has its precisions and `#line 2` on lines of their own (2 and 3) and every later line of the
+    # file two lines further down. (With comments above #version the precisions take its line and the
+    # two numberings agree, which could not tell them apart.)
+    lines = source.split("\n")
+    lines = lines[next(i for i, text in enumerate(lines) if text.startswith("#version")):]
+    main = next(i for i, text in enumerate(lines) if text.startswith("void main"))
+    line = main + 3  # inside main(): a statement the translator passes on and the compiler refuses
+    broken = lines[:line - 1] + ["    float t10Broken = ;"] + lines[line - 1:]
+    expect_error(set_shader(page, EDITED, "\n".join(broken)), line, f"a syntax error on line {line}")
+    still_drawing(args, page, stage, "after-syntax-error")
+    bad = lines[:line - 1] + ["    float t10Broken = 1.0 @ 2.0;"] + lines[line - 1:]
+    expect_error(set_shader(page, EDITED, "\n".join(bad)), line, f"'@' on line {line} (the translator's error)")
+
+
+def check_refusals(args, page, stage, files):
+    name = next(iter(files))
+    first = expect_error(set_shader(page, "Missing.frag", "x"), 0, "an unknown file")
+    if name not in first["message"]:
+        raise Failure(f"the refusal of an unknown file does not list the stage's files: {first['message']!r}")
+    huge = page.evaluate(f"Module.t10SetShader({json.dumps(name)}, '//'.padEnd(2 * 1024 * 1024, 'x'))",
+                         await_promise=True)
+    expect_error(huge, 0, "a 2 MiB source")
+    expect_error(set_shader(page, name, b"#version 430 core\n// caf\xe9\n"), 2, "Latin-1 bytes (not UTF-8)")
+    lone = page.evaluate(f"Module.t10SetShader({json.dumps(name)}, '#version 430 core\\n\\n// \\uD800')",
+                         await_promise=True)
+    expect_error(lone, 3, "a lone surrogate")
+    expect_error(page.evaluate(f"Module.t10SetShader({json.dumps(name)}, 42)", await_promise=True), 0, "a number")
+    # Compiles, but does not link (an input the vertex shader does not write): the previous file is put
+    # back and the stage rebuilt with it, so the page keeps drawing the reference's frame.
+    lines = files[EDITED].split("\n")
+    main = next(i for i, text in enumerate(lines) if text.startswith("void main"))
+    unlinked = lines[:main] + ["in vec3 t10NotFromTheVertexShader;"] + lines[main:main + 2] + [
+        "    if (t10NotFromTheVertexShader.x > 2.0) discard;"] + lines[main + 2:]
+    first = expect_error(set_shader(page, EDITED, "\n".join(unlinked)), 0, "a program that does not link")
+    if "link" not in first["message"]:
+        raise Failure(f"the link error does not say so: {first['message']!r}")
+    still_drawing(args, page, stage, "after-refusals")
+
+
+def run_case(args, page, stage, first):
+    web_test.page_folder(args, stage)
+    started = time.monotonic()
+    page.open(stage, web_test.GOLDEN_QUERY)
+    web_test.rendered(page, stage)
+    files = repository_shaders(args, stage)
+    check_listing(page, stage, files)
+    check_errors(args, page, stage, files[EDITED])
+    if first:
+        check_refusals(args, page, stage, files)
+    wrong = files[EDITED].replace(*WHITE_POINT)
+    if wrong == files[EDITED]:
+        raise Failure(f"{stage}/{EDITED} has no {WHITE_POINT[0]!r} to change")
+    answer = set_shader(page, EDITED, wrong)
+    if answer != {"ok": True, "errors": []}:
+        raise Failure(f"the white point 1.0 was not applied: {answer!r}")
+    mutant = os.path.join(args.out, f"{stage}-white-point-1.png")
+    page.capture(mutant)
+    try:
+        web_test.judge(args, mutant, stage, [])
+    except Failure:
+        print("  the white point 1.0 is applied: the frame no longer matches the golden (as it must)", flush=True)
+    else:
+        raise Failure("with the white point 1.0 applied the frame still matches the golden: the edit did not "
+                      "reach the frame, or the comparison cannot fail")
+    for name, source in files.items():
+        answer = set_shader(page, name, source)
+        if answer != {"ok": True, "errors": []}:
+            raise Failure(f"the reference's {name} through t10SetShader: {answer!r}")
+    still_drawing(args, page, stage, "reference-again")
+    print(f"{stage}: passed in {time.monotonic() - started:.1f} s", flush=True)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--web", required=True, help="the built pages (out/web)")
+    ap.add_argument("--out", required=True, help="folder for frames and the browser's log")
+    ap.add_argument("--source", required=True, help="the repository's root (the stages' shader files)")
+    ap.add_argument("--case", action="append", required=True, help="a stage whose page is tested")
+    ap.add_argument("--goldens", required=True)
+    ap.add_argument("--tolerance", default=None, help="default: GOLDENS/web.tolerance")
+    ap.add_argument("--imgcompare", required=True)
+    ap.add_argument("--chromium", default="chromium")
+    ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe")
+    ap.add_argument("--timeout", type=float, default=150, help="seconds for the whole test")
+    args = ap.parse_args()
+    args.tolerance = args.tolerance or os.path.join(args.goldens, "web.tolerance")
+    args.query, args.name = "", None
+    if not shutil.which(args.chromium):
+        print(f"SKIP: {args.chromium}: not found (apt-get install chromium)", file=sys.stderr)
+        return 77
+    os.makedirs(args.out, exist_ok=True)
+    for stage in args.case:
+        web_test.page_folder(args, stage)
+    page = web_test.Page(args)
+    try:
+        for i, stage in enumerate(args.case):
+            try:
+                run_case(args, page, stage, i == 0)
+            except Failure as failure:
+                raise Failure(f"{stage}: {failure}{page.problems()}") from None
+    finally:
+        page.close()
+    print("ok")
+    return 0
+
+
+if __name__ == "__main__":
+    cdp.run_main(main)
