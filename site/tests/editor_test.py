@@ -18,7 +18,10 @@ SwiftShader), driven as a reader drives it (its buttons and its text, through th
   6. a while loop is refused at its line before it reaches the GPU (a shader that could hang the tab);
   7. the download is a .zip of part1/PostProcess.frag and part1/PostProcessInit.frag with the editor's
      text, and uploading a file through the upload input puts it into the editor;
-  8. after a reload the embed's editor opens with the work as it was left (localStorage).
+  8. after a reload the embed's editor opens with the work as it was left (localStorage);
+  9. the stage's own page with ?edit=1 opens the same editor with the same kept work, and keys typed in
+     its text reach it (W is typed, Backspace takes it away: emscripten's GLFW cancels Backspace for the
+     whole window, so without edit_page.js's listener nothing is deleted), and Tab moves on to Apply.
 With --axe AXE.JS, axe-core (axe_test.py's WCAG 2.1 A and AA rules) runs on the page with the editor open
 and its error listed (step 5), at --width in both schemes: 0 violations.
 Screenshots of the editor at each step go into --out (editor-*.png).
@@ -41,6 +44,7 @@ sys.dont_write_bytecode = True
 from web import cdp  # noqa: E402  (the DevTools client; tools/ on PYTHONPATH)
 from web.cdp import Failure, evaluate, screenshot  # noqa: E402
 import axe_test  # noqa: E402  (axe-core in the page, for --axe)
+from keyboard_test import press  # noqa: E402  (keys typed through the DevTools protocol)
 
 SKIP = 77
 REC709 = "vec3(0.2126f, 0.7152f, 0.0722f)"
@@ -348,6 +352,26 @@ def main():
         expect(errors and errors[0]["line"] == broken_line, f"after a reload the kept syntax error is not listed: {s['errors']}")
         run.shot("8-reloaded")
         print(f"8. reloaded: the work is kept ({s['status']})", flush=True)
+
+        # 9. The stage's own page with ?edit=1.
+        browser.send("Page.navigate", {"url": f"{base}web/{args.stage}/index.html?edit=1&size=640x360"}, session)
+        browser.wait_event("Page.loadEventFired", session, timeout=60)
+        status = "document.querySelector('.t10-editor-status') ? document.querySelector('.t10-editor-status').textContent : ''"
+        cm = "document.querySelector('.CodeMirror').CodeMirror"
+        text = cdp.wait_until(lambda: run.js(status), lambda v: v and "Loading" not in v and "Compiling" not in v, 60,
+                              "the stage page's editor did not open", lambda v: f": {v!r}")
+        expect(run.js(f"{cm}.getValue()") == broken_text, "the stage page's editor does not open with the kept work")
+        run.js(f"{cm}.focus(); {cm}.setCursor({{line: 0, ch: 0}})")
+        press(browser, session, "w")
+        typed = run.js(f"{cm}.getValue()")
+        press(browser, session, "Backspace")
+        erased = run.js(f"{cm}.getValue()")
+        expect(typed == "w" + broken_text and erased == broken_text,
+               f"typing in the stage page's editor: W gave {typed[:12]!r}, Backspace {erased[:12]!r}")
+        press(browser, session, "Tab")
+        focused = run.js("document.activeElement.className")
+        expect("t10-editor-apply" in focused, f"Tab from the stage page's text reaches {focused!r}, not Apply")
+        print(f"9. the stage page with ?edit=1: {text}; typing and Tab work", flush=True)
 
     print(f"editor: {time.monotonic() - started:.1f} s")
     if problems:

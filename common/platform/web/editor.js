@@ -248,7 +248,8 @@
   // options: container (the element to build into), module (a function returning the page's Module),
   // stage, title (the part in words), stageBase (the URL of the stage's folder: edit.json, start/),
   // codemirror (the URL of CodeMirror's files), css (the URL of editor.css, or "" when the page has it),
-  // frames (a function: the page's frame count, optional). Returns a Promise of the editor.
+  // frames (a function: the page's frame count, optional), tabIndents (false where the page keeps Tab for
+  // moving on: the stage page). Returns a Promise of the editor.
   function create(options) {
     var container = options.container;
     container.classList.add("t10-editor");
@@ -320,7 +321,8 @@
     var self = this, box = this.options.container, id = "t10-editor-" + this.plan.stage;
     var intro = element("p", { className: "t10-editor-intro", id: id + "-help" },
       "Your " + this.partWords() + " started from " + this.startWords() + ", as make student starts it; it is kept in this browser. " +
-      "Ctrl+Enter applies. In the text, Tab indents: press Escape, then Tab, to move on.");
+      "Ctrl+Enter applies. " + (this.options.tabIndents === false ? "Tab moves on from the text; Ctrl+] and Ctrl+[ indent."
+                                : "In the text, Tab indents: press Escape, then Tab, to move on."));
     box.insertBefore(intro, this.status);
     var tabs = element("div", { className: "t10-editor-files", role: "group", "aria-label": "Shader files" });
     this.fileButtons = this.files.map(function (f, i) {
@@ -339,15 +341,18 @@
     this.cm = CodeMirror(host, {
       value: "", lineNumbers: true, lineWrapping: true, indentUnit: 4, tabSize: 4, viewportMargin: Infinity,
       screenReaderLabel: "Shader source", extraKeys: {
-        "Tab": function (cm) { if (self.escaped) return CodeMirror.Pass; if (cm.somethingSelected()) cm.indentSelection("add"); else cm.replaceSelection("    "); },
-        "Shift-Tab": function (cm) { if (self.escaped) return CodeMirror.Pass; cm.indentSelection("subtract"); },
+        "Tab": function (cm) { if (cm.somethingSelected()) cm.indentSelection("add"); else cm.replaceSelection("    "); },
+        "Shift-Tab": function (cm) { cm.indentSelection("subtract"); },
         "Ctrl-Enter": function () { self.applyAll("your edit"); },
         "Cmd-Enter": function () { self.applyAll("your edit"); },
         "Esc": function () { self.escaped = true; self.say("Escape: Tab now moves on from the editor."); }
       }
     });
+    // After Escape, Tab and Shift+Tab are the browser's again: CodeMirror leaves an event marked
+    // codemirrorIgnore alone, so the focus moves on (no keyboard trap, WCAG 2.1.2).
     this.cm.on("keydown", function (cm, event) {
-      if (event.key !== "Escape" && event.key !== "Tab" && event.key !== "Shift") self.escaped = false;
+      if (event.key === "Tab" && self.escaped) event.codemirrorIgnore = true;
+      else if (event.key !== "Escape" && event.key !== "Shift") self.escaped = false;
     });
     this.cm.on("focus", function () { self.escaped = false; });
     this.cm.getInputField().setAttribute("aria-describedby", id + "-help");
