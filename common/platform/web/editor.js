@@ -69,13 +69,38 @@
 
   function lineAt(source, index) { return source.slice(0, index).split("\n").length; }
 
-  // [{line, message}] for each loop whose iterations are not bounded by literals: while and do loops,
-  // and for loops other than "for (int i = A; i < B; ++i)" with integers A, B (any of <, <=, >, >=,
-  // ++/--/+= C) and at most MAX_LOOP iterations. The tutorial's shaders have no loops at all; a loop that
-  // never ends would stop the browser's GPU process, so it is refused with its line instead.
+  // The end of the statement that starts at `at` (after a loop's head): its matching "}" for a block,
+  // else its ";" (a nested loop's own body counted in).
+  function statementEnd(text, at) {
+    while (/\s/.test(text.charAt(at))) at++;
+    if (text.charAt(at) === "{") {
+      for (var depth = 0, i = at; i < text.length; i++) {
+        if (text.charAt(i) === "{") depth++;
+        else if (text.charAt(i) === "}" && --depth === 0) return i;
+      }
+      return text.length;
+    }
+    var head = /^(for|while)\s*\(/.exec(text.slice(at));
+    if (head) {
+      for (var open = 0, j = at + head[0].length - 1; j < text.length; j++) {
+        if (text.charAt(j) === "(") open++;
+        else if (text.charAt(j) === ")" && --open === 0) return statementEnd(text, j + 1);
+      }
+      return text.length;
+    }
+    var semicolon = text.indexOf(";", at);
+    return semicolon < 0 ? text.length : semicolon;
+  }
+
+  // [{line, message}] for the loops a page cannot bound: while and do loops, for loops other than
+  // "for (int i = A; i < B; ++i)" with integers A, B (any of <, <=, >, >=, ++/--/+= C) and i not changed
+  // in the body, and loops whose
+  // iterations, nested ones multiplied, come to more than MAX_LOOP for a pixel. The tutorial's shaders
+  // have no loops at all; one that never ends would stop the browser's GPU process (and the tab with it),
+  // so it is refused with its line before it is compiled.
   function unboundedLoops(source) {
     var text = withoutComments(source);
-    var found = [];
+    var found = [], loops = [];
     var keyword = /\b(while|do|for)\b/g;
     var match;
     while ((match = keyword.exec(text))) {
@@ -87,21 +112,41 @@
       }
       var head = /^for\s*\(\s*int\s+(\w+)\s*=\s*(-?\d+)\s*;\s*(\w+)\s*(<=|>=|<|>)\s*(-?\d+)\s*;\s*(?:(\+\+|--)\s*(\w+)|(\w+)\s*(\+\+|--)|(\w+)\s*(\+=|-=)\s*(\d+))\s*\)/
         .exec(text.slice(match.index));
-      var ok = false;
+      var count = Infinity, name = "";
       if (head) {
-        var name = head[1], from = Number(head[2]), to = Number(head[5]), op = head[4];
+        name = head[1]; var from = Number(head[2]), to = Number(head[5]), op = head[4];
         var stepName = head[7] || head[8] || head[10];
         var step = head[6] || head[9] ? (head[6] || head[9]) === "++" ? 1 : -1
                  : (head[11] === "+=" ? 1 : -1) * Number(head[12]);
         var up = op === "<" || op === "<=";
-        var count = up ? to - from + (op === "<=" ? 1 : 0) : from - to + (op === ">=" ? 1 : 0);
-        ok = head[3] === name && stepName === name && step !== 0 && (step > 0) === up &&
-             count / Math.abs(step) <= MAX_LOOP;
+        var span = up ? to - from + (op === "<=" ? 1 : 0) : from - to + (op === ">=" ? 1 : 0);
+        if (head[3] === name && stepName === name && step !== 0 && (step > 0) === up)
+          count = Math.max(0, Math.ceil(span / Math.abs(step)));
       }
-      if (!ok) found.push({ line: line, message: "a for loop whose count the page cannot bound: write it as " +
-                            "for (int i = 0; i < N; ++i) with a number N of at most " + MAX_LOOP +
-                            ", so that a shader cannot hang the browser" });
+      if (count > MAX_LOOP) {
+        found.push({ line: line, message: "a for loop whose count the page cannot bound: write it as " +
+                     "for (int i = 0; i < N; ++i) with a number N of at most " + MAX_LOOP +
+                     ", so that a shader cannot hang the browser" });
+        continue;
+      }
+      var bodyStart = match.index + head[0].length, bodyEnd = statementEnd(text, bodyStart);
+      var changed = new RegExp("(\\+\\+|--)\\s*" + name + "\\b|\\b" + name + "\\s*(\\+\\+|--|[-+*/%&|^]?=(?!=))");
+      if (changed.test(text.slice(bodyStart, bodyEnd + 1))) {
+        found.push({ line: line, message: "a for loop whose counter " + name + " is changed inside it: the page cannot " +
+                     "bound its count, so it refuses it, so that a shader cannot hang the browser" });
+        continue;
+      }
+      loops.push({ line: line, count: count, start: match.index, end: bodyEnd });
     }
+    // Nested loops multiply: each loop's iterations times those of the loops around it.
+    loops.forEach(function (loop) {
+      var total = loops.reduce(function (n, outer) {
+        return outer.start <= loop.start && loop.end <= outer.end ? n * outer.count : n;
+      }, 1);
+      if (total > MAX_LOOP)
+        found.push({ line: loop.line, message: "nested loops that run " + total + " times for a pixel: the page runs at most " +
+                     MAX_LOOP + ", so that a shader cannot hang the browser" });
+    });
     return found;
   }
 
