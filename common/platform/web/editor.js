@@ -232,58 +232,74 @@
     return String(value);
   }
 
+  // "[luminance-weights] your luminance weights measure (0.299, 0.587, 0.114); the tutorial's (0.2126, ...)".
   function mistakeText(mistake) {
-    var text = mistake.id ? "[" + mistake.id + "] " : "";
-    text += mistake.text || mistake.message || mistake.title || "";
+    var text = mistake.id ? "[" + mistake.id + "]" : "";
     var estimate = mistake.estimate;
-    if (estimate && estimate.parameter !== undefined)
-      text += (text ? ": " : "") + "your " + String(estimate.parameter).replace(/_/g, " ") + " measures " + formatValue(estimate.value);
-    return text;
+    if (estimate && estimate.parameter !== undefined) {
+      var what = String(estimate.parameter).replace(/_/g, " ");
+      text += " your " + what + (/s$/.test(what) ? " measure " : " measures ") + formatValue(estimate.value);
+      if (estimate.tutorial !== undefined) text += "; the tutorial's: " + formatValue(estimate.tutorial);
+    }
+    if (mistake.text || mistake.message) text += " " + (mistake.text || mistake.message);
+    return text.trim();
   }
 
-  // The report as make check shows it: the score, the first step to fix, each check's step and verdict
-  // with its named mistakes (and their measured values), and what the page cannot judge.
-  function renderReport(box, report) {
+  function stepsOf(check) {
+    var steps = check.steps || (check.step !== undefined ? [check.step] : []);
+    return steps.length ? " (step" + (steps.length > 1 ? "s " : " ") + steps.join(", ") + ")" : "";
+  }
+
+  // The report (t10-grade's report.json fields) as make check shows it: the score, the first step to
+  // fix, the points per step, each failed check with its diagnosis and named mistakes (their measured
+  // values), and what the page cannot judge. stepLink(step): a link's href for a step, or null.
+  function renderReport(box, report, stepLink) {
     box.textContent = "";
+    box.appendChild(element("p", { className: "t10-editor-score" }, "Score: " + formatValue(report.score) + " of 100"));
     var checks = report.checks || [];
-    var failing = checks.filter(function (c) { return !c.passed && c.status !== "not-judged" && c.status !== "skipped"; });
-    var score = element("p", { className: "t10-editor-score" },
-                        "Score: " + formatValue(report.score) + (report.max_score || report.maxScore ? " of " + (report.max_score || report.maxScore) : " of 100"));
-    box.appendChild(score);
-    var first = report.first_to_fix || report.firstToFix || (failing[0] && failing[0].step);
-    if (first !== undefined && first !== null && failing.length) {
-      var fix = element("p", { className: "t10-editor-first" }, "Fix first: step " + (first.step !== undefined ? first.step : first) +
-                        (first.title ? " (" + first.title + ")" : "") + ".");
-      box.appendChild(fix);
-    } else if (!failing.length) {
-      box.appendChild(element("p", { className: "t10-editor-first" }, "Every step the page can check passes."));
+    var failed = checks.filter(function (c) { return !c.passed; });
+    var first = report.fix_first || (failed.length ? "step" + stepsOf(failed[0]).replace(/^ \(steps? |\)$/g, " ") : "");
+    box.appendChild(element("p", { className: "t10-editor-first" },
+                            failed.length ? "Fix first: " + String(first).replace(/^fix first:\s*/i, "") : "Every check the page can make passes."));
+    if ((report.steps || []).length) {
+      var table = element("table", { className: "t10-editor-steps" });
+      table.appendChild(element("caption", {}, "Points per step"));
+      var head = element("tr");
+      ["Step", "Points", "Result"].forEach(function (h) { head.appendChild(element("th", { scope: "col" }, h)); });
+      table.appendChild(element("thead")).appendChild(head);
+      var body = table.appendChild(element("tbody"));
+      report.steps.forEach(function (step) {
+        var row = element("tr", { className: step.passed ? "t10-editor-pass" : "t10-editor-fail" });
+        var cell = element("th", { scope: "row" });
+        var href = stepLink ? stepLink(step.step) : null;
+        var label = "step " + step.step;
+        if (href) { var a = element("a", { href: href }, label); cell.appendChild(a); } else cell.textContent = label;
+        row.appendChild(cell);
+        row.appendChild(element("td", {}, String(step.points)));
+        row.appendChild(element("td", {}, step.passed ? "passed" : "lost" + ((step.failed_checks || []).length ? ": " + step.failed_checks.join(", ") : "")));
+        body.appendChild(row);
+      });
+      box.appendChild(table);
     }
-    var table = element("table", { className: "t10-editor-checks" });
-    var head = element("tr");
-    ["Step", "Check", "Result"].forEach(function (h) { head.appendChild(element("th", { scope: "col" }, h)); });
-    table.appendChild(element("thead")).appendChild(head);
-    var body = table.appendChild(element("tbody"));
-    checks.forEach(function (check) {
-      var row = element("tr", { className: check.passed ? "t10-editor-pass" : "t10-editor-fail" });
-      row.appendChild(element("td", {}, check.step === undefined ? "" : String(check.step)));
-      row.appendChild(element("td", {}, check.title || check.name || check.id || ""));
-      var result = element("td");
-      var verdict = check.passed ? "passed" : (check.status === "not-judged" ? "not judged here" : "failed");
-      if (check.points !== undefined && check.max_points !== undefined) verdict += " (" + formatValue(check.points) + " of " + formatValue(check.max_points) + " points)";
-      result.appendChild(element("span", {}, verdict));
-      (check.mistakes || []).forEach(function (m) { result.appendChild(element("div", { className: "t10-editor-mistake" }, mistakeText(m))); });
-      if (!check.passed && check.detail) result.appendChild(element("div", {}, String(check.detail)));
-      row.appendChild(result);
-      body.appendChild(row);
-    });
-    if (checks.length) box.appendChild(table);
-    var cannot = report.not_judged || report.notJudged || report.cannot_judge || report.limits;
-    if (cannot) {
-      var list = Array.isArray(cannot) ? cannot : [cannot];
+    if (failed.length) {
+      box.appendChild(element("p", {}, "What failed:"));
+      var list = box.appendChild(element("ul", { className: "t10-editor-failed" }));
+      failed.forEach(function (check) {
+        var item = element("li", {}, (check.id || check.name || "a check") + stepsOf(check) +
+                           (check.diagnosis ? ": " + check.diagnosis : "") +
+                           (check.measured ? " (measured " + check.measured + (check.tolerance ? ", tolerance " + check.tolerance : "") + ")" : ""));
+        (check.mistakes || []).forEach(function (m) { item.appendChild(element("div", { className: "t10-editor-mistake" }, mistakeText(m))); });
+        list.appendChild(item);
+      });
+    }
+    var limits = report.not_judged || report.cannot_judge || report.limits;
+    if (limits) {
       var section = element("div", { className: "t10-editor-limits" });
       section.appendChild(element("p", {}, "What the page cannot judge (not scored as right):"));
       var ul = section.appendChild(element("ul"));
-      list.forEach(function (item) { ul.appendChild(element("li", {}, typeof item === "string" ? item : (item.text || item.what || JSON.stringify(item)))); });
+      (Array.isArray(limits) ? limits : [limits]).forEach(function (item) {
+        ul.appendChild(element("li", {}, typeof item === "string" ? item : (item.text || item.reason || item.what || JSON.stringify(item))));
+      });
       box.appendChild(section);
     }
   }
@@ -294,7 +310,8 @@
   // stage, title (the part in words), stageBase (the URL of the stage's folder: edit.json, start/),
   // codemirror (the URL of CodeMirror's files), css (the URL of editor.css, or "" when the page has it),
   // frames (a function: the page's frame count, optional), tabIndents (false where the page keeps Tab for
-  // moving on: the stage page). Returns a Promise of the editor.
+  // moving on: the stage page), stepLink (a function: the href of a tutorial step, optional). Returns a
+  // Promise of the editor.
   function create(options) {
     var container = options.container;
     container.classList.add("t10-editor");
@@ -627,7 +644,7 @@
       self.say("Checking " + self.partWords() + " with the grader's checks ...");
       return Promise.resolve(module.t10Check()).then(function (report) {
         if (typeof report === "string") report = JSON.parse(report);
-        renderReport(self.reportBox, report);
+        renderReport(self.reportBox, report, self.options.stepLink);
         self.reportBox.hidden = false;
         var first = self.reportBox.querySelector(".t10-editor-first");
         var mistake = self.reportBox.querySelector(".t10-editor-mistake");

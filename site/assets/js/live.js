@@ -276,6 +276,7 @@
         return window.T10Editor.create({
           container: panel, stageBase: live.getAttribute("data-src").replace(/index\.html$/, ""),
           codemirror: EDITOR_BASE, css: EDITOR_BASE + "editor.css",
+          stepLink: function (step) { return document.getElementById("step-" + step) ? "#step-" + step : null; },
           module: function () { return frame.contentWindow && frame.contentWindow.Module; },
           frames: function () { var body = pageOf(frame); return body ? Number(body.dataset.t10Frames || 0) : 0; }
         });
