@@ -644,6 +644,10 @@
       self.say("Checking " + self.partWords() + " with the grader's checks ...");
       return Promise.resolve(module.t10Check()).then(function (report) {
         if (typeof report === "string") report = JSON.parse(report);
+        if (!report || report.error) {
+          self.say("The check could not run: " + (report ? report.error : "the page gave no report"), true);
+          return report;
+        }
         renderReport(self.reportBox, report, self.options.stepLink);
         self.reportBox.hidden = false;
         var first = self.reportBox.querySelector(".t10-editor-first");
