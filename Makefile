@@ -49,6 +49,7 @@ help:
 	@echo "make site-deps  install the site tests' npm tools (axe-core, pinned) into $(BUILD)/site-axe/"
 	@echo "make site-audit  Lighthouse (mobile) on the tutorial page: accessibility 100, performance, LCP and bytes printed"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium and Firefox ESR"
+	@echo "make web-agreement  the page's check (Module.t10Check) against t10-grade on every shader-only mistake of the grader's batches"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
 	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
@@ -387,6 +388,17 @@ bench-grader: build grade-deps
 grade-sweep: PACKAGES += catch2 bubblewrap
 grade-sweep: build grade-deps
 	python3 grader/tests/sweep.py $(BIN)/t10-grade $(CURDIR) $(OUT)/grade-sweep $(GRADE_JOBS)
+
+# make web-agreement: the page's check (Module.t10Check) against t10-grade on every shader-only
+# submission of the grader's test batches (issue 52, tests/web/agreement.py; make test runs three of
+# them): the batches graded by their ctest tests, then each submission's shaders set in its part's page
+# and checked there. About 4 minutes after the build (the batches), 40 s of it in Chromium.
+.PHONY: web-agreement
+web-agreement: PACKAGES += catch2 bubblewrap
+web-agreement: build grade-deps web
+	cd $(BUILD) && ctest --output-on-failure -R '^grade: (write the test submissions|part [123] batch with --jobs 2)$$'
+	PYTHONPATH=$(CURDIR)/tools python3 tests/web/agreement.py --web $(OUT)/web --source $(CURDIR) --all \
+	    --submissions $(BUILD)/grader/test-out/submissions --reports $(BUILD)/grader/test-out/reports --out $(OUT)/web-agreement
 
 # make grade-jobs-check: the proof that a grader other than root keeps its jobs apart (issue 38): a fork
 # bomb graded beside honest copies with --jobs 2, twenty rounds (grader/tests/isolation/fork_bomb_jobs.py;

@@ -94,6 +94,9 @@ set(T10_WEB_ROOT /t10)
 set(T10_COMMON_SHADER_DIR_VALUE ${T10_WEB_ROOT}/common/shaders)
 set(T10_ASSET_DIR_VALUE ${T10_WEB_ROOT}/common/assets)
 
+# The page's check (Module.t10Check): t10-grade's checks compiled for every page (grader/page/page.cmake).
+include(${PROJECT_SOURCE_DIR}/grader/page/page.cmake)
+
 # t10_web_stage(<target> <shader folder>): links a stage for the browser into
 # T10_WEB_OUTPUT_DIR/<target>/ with its page and its files (its shaders, common/shaders, the scene).
 function(t10_web_stage target folder)
@@ -106,13 +109,19 @@ function(t10_web_stage target folder)
         "SHELL:--preload-file ${folder}@${T10_WEB_ROOT}/${target}"
         "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/shaders@${T10_COMMON_SHADER_DIR_VALUE}"
         "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/common/assets@${T10_ASSET_DIR_VALUE}"
-        # The page's shader editing and check (Module.t10Shaders, t10SetShader): workbench.js beside the page.
+        # The page's shader editing and check (Module.t10Shaders, t10SetShader, t10Check): workbench.js, the
+        # grader's checks (t10_web_check) and their catalogue and rubric.
         "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/platform/web/workbench.js")
+    target_link_libraries(${target} PRIVATE t10_web_check)
+    foreach(file ${T10_WEB_GRADE_FILES})
+        target_link_options(${target} PRIVATE "SHELL:--preload-file ${file}")
+    endforeach()
     # Relinked when a packaged file changes. A glob, where the project lists files: what is packaged is
     # whole folders (a student's folder too), and the list only decides when to relink.
     file(GLOB_RECURSE packaged CONFIGURE_DEPENDS ${folder}/*.vert ${folder}/*.frag ${PROJECT_SOURCE_DIR}/common/shaders/*
          ${PROJECT_SOURCE_DIR}/common/assets/*)
-    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged} ${PROJECT_SOURCE_DIR}/common/platform/web/workbench.js)
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${packaged} ${PROJECT_SOURCE_DIR}/common/platform/web/workbench.js
+                 ${PROJECT_SOURCE_DIR}/grader/diagnosis/mistakes.tsv ${PROJECT_SOURCE_DIR}/grader/scoring/rubric.txt)
     set(T10_WEB_STAGE ${target})
     configure_file(${PROJECT_SOURCE_DIR}/common/platform/web/index.html.in ${out}/index.html @ONLY)
     t10_web_editor(${target} ${out})

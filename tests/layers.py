@@ -39,6 +39,7 @@ the headers of common/ (as above) and those of its own stage and the stages befo
     similarity  report                (--similarity: JPlag run over the class, the index's section)
     cli       every stage             (the command line on top)
     tests     the checks' core (checks, diagnosis, part), never what is around it (and GRADER_TEST_HEADERS)
+    page      capture, checks, diagnosis, part, scoring (the page's check, Module.t10Check: the browser build)
 
 A grader header is known by its path below the grader folder (`checks/checks.hpp`). No two grader
 files may need each other.
@@ -110,6 +111,7 @@ GRADER_ALLOWED = {
     "cli": {"cli", "isolation", "intake", "compile", "capture", "checks", "diagnosis", "part", "scoring", "report", "platforms",
             "similarity"},
     "tests": {"tests", "checks", "diagnosis", "part"},
+    "page": {"page", "capture", "checks", "diagnosis", "part", "scoring"},
 }
 
 # The checks' core: these stages but for the units around them (a dump folder read, the catalogue's

@@ -31,6 +31,11 @@ public:
 // must write that is missing or unreadable.
 std::vector<Check> bufferChecks(int part, const CaseRun& run, CheckImages& images);
 
+// bufferChecks, with a buffer the part must write that is missing or malformed reported as one failed
+// check, "<case>.buffers", saying which (costing every step of the part) instead of thrown: what
+// t10-grade and the page's check (grader/page/) run on each case.
+std::vector<Check> caseBufferChecks(int part, const CaseRun& run, CheckImages& images);
+
 // Makes the cases agree: a constant the student wrote is the same in every render, so the frame's
 // constants are fitted once to every case whose frame failed (kept only when one value explains
 // them all), the bloom threshold is the one luminance interval every case allows, and of several

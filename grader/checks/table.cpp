@@ -483,4 +483,18 @@ std::vector<Check> bufferChecks(int part, const CaseRun& run, CheckImages& image
     return state.checks;
 }
 
+std::vector<Check> caseBufferChecks(int part, const CaseRun& run, CheckImages& images) {
+    try {
+        return bufferChecks(part, run, images);
+    } catch (const Error& error) {
+        Check check;
+        check.id = run.id + ".buffers";
+        check.steps = partInfo(part).steps;
+        check.measured = error.what();
+        check.tolerance = "every texture of the part is on its unit (15, 16, 17) with its full size and levels";
+        check.diagnosis = "the stage does not write the buffers of this part where the tutorial puts them";
+        return {check};
+    }
+}
+
 } // namespace t10::grade

@@ -127,9 +127,10 @@ t10_add_web_test("tutorial10_part3_gaussian on SwiftShader matches its golden" g
 
 # The page's workbench contract (tests/web/workbench_test.py): Parts 1-3 in one Chromium, one page load
 # each; Module.t10Shaders lists the stage's files, t10SetShader answers errors on the student's line
-# and keeps the last good program drawing, a wrong edit leaves the golden and the reference's own files
-# bring it back. About 11 s alone on two cores.
-set(workbench_test "web: Module.t10SetShader on Parts 1-3: errors on the student's line, the reference's shaders match the goldens")
+# and keeps the last good program drawing, a wrong edit leaves the golden (and Module.t10Check names
+# it with its value), the reference's own files bring the golden back and Module.t10Check scores them
+# 100. About 14 s alone on two cores.
+set(workbench_test "web: Module.t10SetShader and t10Check on Parts 1-3: errors on the student's line, the reference's shaders match the goldens and score 100")
 set(cases "")
 foreach(stage ${parts})
     if(NOT stage STREQUAL "tutorial10_part0_start")
@@ -141,6 +142,21 @@ add_test(NAME "${workbench_test}"
                  --web ${T10_WEB_PAGES} --chromium ${T10_CHROMIUM} --imgcompare $<TARGET_FILE:imgcompare>
                  --goldens ${GOLDENS} --source ${PROJECT_SOURCE_DIR} --out ${WEB_OUT}/workbench ${cases})
 set_tests_properties("${workbench_test}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77)
+
+# The page's check agrees with t10-grade (tests/web/agreement.py) on a representative set of the grader
+# batches' shader-only mistakes, graded by the batch tests (grade_part1, grade_part3): a constant of the
+# frame (Part 1's middle grey), the luminance weights (Rec. 601, Part 3) and the blur's sigma (Part 3):
+# the same checks fail, the same mistake is named, its value within 1 %, the score within 2 points.
+# About 8 s alone. Every shader-only submission of the three batches: make web-agreement.
+set(agreement_test "web: Module.t10Check agrees with t10-grade on a middle grey, Rec. 601 weights and a sigma")
+set(GRADE_TEST_OUT ${PROJECT_BINARY_DIR}/grader/test-out)
+add_test(NAME "${agreement_test}"
+         COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/web/agreement.py
+                 --web ${T10_WEB_PAGES} --chromium ${T10_CHROMIUM} --source ${PROJECT_SOURCE_DIR}
+                 --submissions ${GRADE_TEST_OUT}/submissions --reports ${GRADE_TEST_OUT}/reports --out ${WEB_OUT}/agreement
+                 --case 1 p1_middle_grey_1_0 --case 3 rec601 --case 3 sigma)
+set_tests_properties("${agreement_test}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77
+                     FIXTURES_REQUIRED "grade_part1;grade_part3")
 
 # A browser without float render targets gets the message, not a black canvas.
 t10_add_web_test("without EXT_color_buffer_float the page says so" nofloat tutorial10_part1_tonemap)

@@ -14,7 +14,10 @@ Chromium, and judged by the project's imgcompare against tests/golden/STAGE.png 
   3. A character GLSL lacks on line L2 (the translator's own error) is answered with line L2 too.
   4. A wrong but valid edit (the white point Yw 1.0 instead of 0.22, step 9) is applied and redrawn:
      the frame must no longer match the golden (the edits reach the frame; the comparison can fail).
-  5. The reference's own files through Module.t10SetShader: the frame matches the golden again.
+     The first case then runs Module.t10Check(): t10-grade's checks must fail the frame and name the
+     white point with its value within 1 % of 1.0 (the check can fail; the value is measured).
+  5. The reference's own files through Module.t10SetShader: the frame matches the golden again, and
+     Module.t10Check() scores 100 with every check of t10-grade's camera cases (pot, npot) passed.
 The first case also sends what must be refused, each with a clear message and the page still drawing:
 a file the stage does not have, a source over the translator's bound, bytes that are not UTF-8, a
 string with a lone surrogate, a source that is not text, and a program that compiles but does not link
@@ -121,6 +124,35 @@ def check_refusals(args, page, stage, files):
     still_drawing(args, page, stage, "after-refusals")
 
 
+def run_check(page, stage):
+    started = time.monotonic()
+    report = page.evaluate("Module.t10Check()", await_promise=True)
+    if not isinstance(report, dict) or "error" in report or "score" not in report:
+        raise Failure(f"Module.t10Check() answered {report!r}")
+    failed = [c["id"] for c in report["checks"] if not c["passed"]]
+    print(f"  t10Check(): score {report['score']}, {len(report['checks'])} checks, failed {failed or 'none'}, "
+          f"{time.monotonic() - started:.1f} s; not judged: {', '.join(n['what'] for n in report['not_judged'])}", flush=True)
+    return report, failed
+
+
+def check_white_point(page, stage):
+    report, failed = run_check(page, stage)
+    found = [m for c in report["checks"] if not c["passed"] for m in c["mistakes"] if m["id"] == "white-point"]
+    if not found or not all(abs(m["estimate"]["value"] - 1.0) <= 0.01 for m in found):
+        raise Failure(f"with the white point 1.0 the check names {[(c['id'], c['mistakes']) for c in report['checks'] if not c['passed']]}")
+    if 9 not in report["failed_steps"] or report["score"] >= 100:
+        raise Failure(f"with the white point 1.0 the score is {report['score']}, the failed steps {report['failed_steps']}")
+
+
+def check_reference(page, stage):
+    report, failed = run_check(page, stage)
+    if failed or report["score"] != 100:
+        raise Failure(f"the reference's shaders score {report['score']} in the page, failing {failed}")
+    judged = {c["id"].split(".")[0] for c in report["checks"]}
+    if judged != {"pot", "npot"}:
+        raise Failure(f"the page judged the cases {sorted(judged)}, not t10-grade's camera cases pot and npot")
+
+
 def run_case(args, page, stage, first):
     web_test.page_folder(args, stage)
     started = time.monotonic()
@@ -146,11 +178,14 @@ def run_case(args, page, stage, first):
     else:
         raise Failure("with the white point 1.0 applied the frame still matches the golden: the edit did not "
                       "reach the frame, or the comparison cannot fail")
+    if first:
+        check_white_point(page, stage)
     for name, source in files.items():
         answer = set_shader(page, name, source)
         if answer != {"ok": True, "errors": []}:
             raise Failure(f"the reference's {name} through t10SetShader: {answer!r}")
     still_drawing(args, page, stage, "reference-again")
+    check_reference(page, stage)
     print(f"{stage}: passed in {time.monotonic() - started:.1f} s", flush=True)
 
 
@@ -167,6 +202,7 @@ def main():
     ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe")
     ap.add_argument("--timeout", type=float, default=150, help="seconds for the whole test")
     args = ap.parse_args()
+
     args.tolerance = args.tolerance or os.path.join(args.goldens, "web.tolerance")
     args.query, args.name = "", None
     if not shutil.which(args.chromium):

@@ -918,7 +918,9 @@ void Translator::emitSubroutines() {
         const std::string indexName = uniqueName(u.name.find("__") == std::string::npos ? "t10SubroutineIndex" + u.name : "t10SubroutineIndex");
         edits_.push_back({u.begin, u.end, "uniform int " + indexName + ";"});
         edits_.push_back({at, at, " " + dispatchFunction(u, type->second, indexName, callees)});
-        out_.layout.subroutineUniforms.push_back({stage_, u.location, indexName});
+        std::vector<NamedValue> functions;
+        for (const auto& [index, name] : callees) functions.push_back({name, index});
+        out_.layout.subroutineUniforms.push_back({stage_, u.location, indexName, functions});
     }
 }
 

@@ -27,6 +27,7 @@ struct ProgramMap {
     std::unordered_map<std::string, GLint> lookedUp;      // name -> the location we handed out
     std::vector<t10::SubroutineUniform> subroutines;
     std::vector<GLint> subroutineLocations;               // WebGL's location of each subroutine's int
+    std::vector<GLuint> subroutineValues;                 // the index each was last set to (glGetUniformSubroutineuiv)
     GLint next = kLookedUpBase;
 };
 
@@ -47,11 +48,19 @@ std::unordered_map<GLuint, TextureInfo>& textures() {
     return map;
 }
 GLuint g_current = 0;
+t10::web::DrawHook g_drawHook = nullptr;
+void* g_drawHookContext = nullptr;
 bool g_norm16 = false;
 bool g_r16Emulation = false;
 
 [[noreturn]] void unavailable(const std::string& call, const std::string& why) {
     throw t10::Error(call + " is not available in the web build (WebGL 2 has no " + why + ")");
+}
+
+t10::GlslStage glslStage(GLenum shadertype) {
+    return shadertype == GL_VERTEX_SHADER ? t10::GlslStage::Vertex
+           : shadertype == GL_FRAGMENT_SHADER ? t10::GlslStage::Fragment
+                                              : t10::GlslStage::Other;
 }
 
 // "name[3]" -> ("name", 3); "name" -> ("name", 0).
@@ -229,9 +238,17 @@ void configureProgram(unsigned program, const ProgramLayout& layout) {
     for (const SubroutineUniform& subroutine : layout.subroutineUniforms) {
         map.subroutines.push_back(subroutine);
         map.subroutineLocations.push_back(glGetUniformLocation(program, subroutine.uniformName.c_str()));
+        map.subroutineValues.push_back(0);
     }
     glUseProgram(static_cast<GLuint>(previous));
     programs()[program] = std::move(map);
+}
+
+std::pair<DrawHook, void*> setDrawHook(DrawHook hook, void* context) {
+    const std::pair<DrawHook, void*> previous{g_drawHook, g_drawHookContext};
+    g_drawHook = hook;
+    g_drawHookContext = context;
+    return previous;
 }
 
 void setTextureNorm16(bool available, bool emulation) {
@@ -315,15 +332,65 @@ void glProgramUniform1i(GLuint program, GLint location, GLint v0) {
 void glUniformSubroutinesuiv(GLenum shadertype, GLsizei count, const GLuint* indices) {
     const auto p = programs().find(g_current);
     if (p == programs().end()) throw t10::Error("glUniformSubroutinesuiv: no program made by ShaderManager is current");
-    const ProgramMap& map = p->second;
-    const t10::GlslStage stage = shadertype == GL_VERTEX_SHADER     ? t10::GlslStage::Vertex
-                                 : shadertype == GL_FRAGMENT_SHADER ? t10::GlslStage::Fragment
-                                                                    : t10::GlslStage::Other;
+    ProgramMap& map = p->second;
+    const t10::GlslStage stage = glslStage(shadertype);
     for (std::size_t i = 0; i < map.subroutines.size(); ++i) {
         const auto& subroutine = map.subroutines[i];
         if (subroutine.stage != stage || subroutine.location < 0 || subroutine.location >= count) continue;
         glUniform1i(map.subroutineLocations[i], static_cast<GLint>(indices[subroutine.location]));
+        map.subroutineValues[i] = indices[subroutine.location];
     }
+}
+
+// The subroutine queries the capture hook's pass capture makes (frame_observer.cpp), answered from the
+// program's layout: the subroutine uniforms of a stage, the index one was set to, a function's name.
+void glGetProgramStageiv(GLuint program, GLenum shadertype, GLenum pname, GLint* values) {
+    if (pname != GL_ACTIVE_SUBROUTINE_UNIFORMS) unavailable("glGetProgramStageiv other than GL_ACTIVE_SUBROUTINE_UNIFORMS", "subroutines");
+    const auto p = programs().find(program);
+    const t10::GlslStage stage = glslStage(shadertype);
+    *values = p == programs().end() ? 0
+                                    : static_cast<GLint>(std::count_if(p->second.subroutines.begin(), p->second.subroutines.end(),
+                                                                       [&](const t10::SubroutineUniform& s) { return s.stage == stage; }));
+}
+
+void glGetUniformSubroutineuiv(GLenum shadertype, GLint location, GLuint* params) {
+    const auto p = programs().find(g_current);
+    if (p == programs().end()) throw t10::Error("glGetUniformSubroutineuiv: no program made by ShaderManager is current");
+    for (std::size_t i = 0; i < p->second.subroutines.size(); ++i) {
+        const auto& subroutine = p->second.subroutines[i];
+        if (subroutine.stage == glslStage(shadertype) && subroutine.location == location) {
+            *params = p->second.subroutineValues[i];
+            return;
+        }
+    }
+    throw t10::Error("glGetUniformSubroutineuiv: the current program has no subroutine uniform at location " + std::to_string(location));
+}
+
+void glGetActiveSubroutineName(GLuint program, GLenum shadertype, GLuint index, GLsizei bufsize, GLsizei* length, GLchar* name) {
+    std::string found;
+    const auto p = programs().find(program);
+    if (p != programs().end()) {
+        for (const auto& subroutine : p->second.subroutines)
+            for (const t10::NamedValue& f : subroutine.functions)
+                if (subroutine.stage == glslStage(shadertype) && f.value == static_cast<int>(index)) found = f.name;
+    }
+    if (found.empty()) throw t10::Error("glGetActiveSubroutineName: the program has no subroutine of index " + std::to_string(index));
+    const std::size_t copied = bufsize > 0 ? std::min(found.size(), static_cast<std::size_t>(bufsize - 1)) : 0;
+    if (bufsize > 0) {
+        std::copy_n(found.begin(), copied, name);
+        name[copied] = '\0';
+    }
+    if (length != nullptr) *length = static_cast<GLsizei>(copied);
+}
+
+void t10WebDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+    glDrawElements(mode, count, type, indices);
+    if (g_drawHook != nullptr) g_drawHook(g_drawHookContext);
+}
+
+void t10WebDrawArrays(GLenum mode, GLint first, GLsizei count) {
+    glDrawArrays(mode, first, count);
+    if (g_drawHook != nullptr) g_drawHook(g_drawHookContext);
 }
 
 void t10WebTexStorage2D(GLenum target, GLsizei levels, GLenum internalformat, GLsizei width, GLsizei height) {
@@ -476,10 +543,5 @@ void glMemoryBarrier(GLbitfield) { unavailable("glMemoryBarrier (--key exact)", 
 void glGetQueryObjectiv(GLuint, GLenum, GLint*) { unavailable("GPU timer queries (--bench)", "GL_TIME_ELAPSED queries"); }
 void glGetQueryObjectui64v(GLuint, GLenum, GLuint64*) { unavailable("GPU timer queries (--bench)", "GL_TIME_ELAPSED queries"); }
 void glQueryCounter(GLuint, GLenum) { unavailable("GPU timer queries (--bench)", "GL_TIMESTAMP queries"); }
-void glGetProgramStageiv(GLuint, GLenum, GLenum, GLint*) { unavailable("glGetProgramStageiv (--capture-passes)", "subroutines"); }
-void glGetUniformSubroutineuiv(GLenum, GLint, GLuint*) { unavailable("glGetUniformSubroutineuiv (--capture-passes)", "subroutines"); }
-void glGetActiveSubroutineName(GLuint, GLenum, GLuint, GLsizei, GLsizei*, GLchar*) {
-    unavailable("glGetActiveSubroutineName (--capture-passes)", "subroutines");
-}
 
 } // extern "C"

@@ -6,6 +6,9 @@
 //       the file's bytes as a Uint8Array or ArrayBuffer) compiled through the page's GLSL ES translator;
 //       ok: the stage runs it and the promise settles once the frame is redrawn; else each error on its
 //       line of `src` (0: the file or the program as a whole) and the last good program keeps drawing.
+//   Module.t10Check()               -> Promise of t10-grade's report for the shaders the page runs
+//       (grader/page/page_check.cpp: score, failed_steps, steps[], checks[] with their mistakes and
+//       estimates, not_judged[]: what the page cannot judge), or {error}.
 // Nothing here throws or rejects: a wrong argument is an answer with ok false, like a compile error.
 (function () {
   'use strict';
@@ -67,11 +70,32 @@
     HEAPU8.set(bytes, buffer); // HEAPU8 read after the allocation: memory may have grown
     const framesBefore = Number(document.body.dataset.t10Frames || 0);
     const answer = JSON.parse(ccall('t10_set_shader', 'string', ['string'], [file]));
-    if (!answer.ok) return Promise.resolve(answer);
-    return redrawn(framesBefore).then((state) => state === 'rendered' ? answer : refusal(
+    // A refused edit that was compiled and linked (a link error) rebuilt the stage with the previous
+    // file: it too settles once that frame is drawn again.
+    if (!answer.ok && document.body.dataset.t10 !== 'loading') return Promise.resolve(answer);
+    return redrawn(framesBefore).then((state) => state === 'rendered' || !answer.ok ? answer : refusal(
         'the page stopped after the edit: ' + (document.getElementById('t10-error') || {}).textContent));
   }
 
+  // The check runs at once (it renders t10-grade's cases in turn, then puts the page's settings back);
+  // the promise settles once the page has drawn its own frame again.
+  function check() {
+    const framesBefore = Number(document.body.dataset.t10Frames || 0);
+    const report = JSON.parse(UTF8ToString(_t10_check()));
+    if (report.error) return Promise.resolve(report);
+    return redrawn(framesBefore).then(() => report);
+  }
+
+  Module['t10Check'] = () => new Promise((resolve) => {
+    // After the current task: a caller's own redraw (t10SetShader's) is not held up by a check.
+    setTimeout(() => {
+      try {
+        check().then(resolve);
+      } catch (error) {
+        resolve({error: 'the check could not run: ' + error});
+      }
+    }, 0);
+  });
   Module['t10Shaders'] = () => JSON.parse(UTF8ToString(_t10_shaders()));
   Module['t10SetShader'] = (file, source) => {
     try {

@@ -111,6 +111,7 @@ public:
     App& app() { return app_; }
     void rebuildStage();
     void requestFrame();
+    std::string applyArguments(const std::vector<std::string>& more);
 
 private:
     std::string apply(const Settings& next); // set()'s second half: rebuild what changed
@@ -176,6 +177,15 @@ void WebPage::rebuildStage() {
 void WebPage::requestFrame() {
     pending_ = std::max(pending_, 1);
     t10PageState("loading", drawn_);
+}
+
+std::string WebPage::applyArguments(const std::vector<std::string>& more) {
+    std::vector<std::string> args = args_;
+    args.insert(args.end(), more.begin(), more.end());
+    Settings next;
+    std::string message;
+    if (parseCaptured(args, app_.stage_, next, message) >= 0) return message.empty() ? "not applied" : message;
+    return apply(next);
 }
 
 std::string WebPage::set(const std::string& name, const std::string& value) {
@@ -276,6 +286,11 @@ App* app() { return g_page != nullptr ? &g_page->app() : nullptr; }
 const Stage* stage() { return g_page != nullptr ? g_stage : nullptr; }
 void rebuildStage() { g_page->rebuildStage(); }
 void requestFrame() { g_page->requestFrame(); }
+std::string applyArguments(const std::vector<std::string>& more) { return g_page->applyArguments(more); }
+void restoreArguments() { g_page->applyArguments({}); }
+void renderNow() { g_page->app().renderFrame(); }
+int width() { return g_page->app().width(); }
+int height() { return g_page->app().height(); }
 
 void fail(const std::string& message) {
     emscripten_cancel_main_loop();

@@ -3,6 +3,7 @@
 // header of the frame layer, compiled in the web build only.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace t10 {
 
@@ -21,6 +22,18 @@ void rebuildStage();
 
 // A frame is due: the loop draws it and the page's state goes "loading", then "rendered".
 void requestFrame();
+
+// The page's command line and every Module.t10Set since, with `more` appended, applied at once (as
+// Module.t10Set applies a setting: the size, the camera, the stage rebuilt); "" or what refused it.
+// The page's own settings are not changed: restoreArguments() puts them back.
+std::string applyArguments(const std::vector<std::string>& more);
+void restoreArguments();
+// The stage's render of one frame into the default framebuffer at once (a requested rebuild first; no
+// view, no UI): what --output and --dump read after a binary's last frame.
+void renderNow();
+// The current framebuffer size.
+int width();
+int height();
 
 // Stops the page's loop with `message` shown as the page's error (the page cannot draw any more).
 void fail(const std::string& message);

@@ -4,6 +4,9 @@
 
 #include "texture_on_unit0.hpp"
 
+#include <cstdint>
+#include <vector>
+
 namespace t10 {
 
 Image8 readDefaultFramebuffer(int width, int height) {
@@ -14,9 +17,12 @@ Image8 readDefaultFramebuffer(int width, int height) {
     GLint drawBuffer = GL_BACK;
     glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
     glReadBuffer(static_cast<GLenum>(drawBuffer));
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.data.data());
-    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    // RGBA, the one format WebGL 2 reads a default framebuffer in (the page's check reads its frame
+    // here too); the alpha is dropped.
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    for (std::size_t p = 0; p < rgba.size() / 4; ++p)
+        for (std::size_t c = 0; c < 3; ++c) image.data[p * 3 + c] = rgba[p * 4 + c];
     return image;
 }
 

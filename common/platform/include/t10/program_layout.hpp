@@ -20,6 +20,7 @@ struct SubroutineUniform {
     GlslStage stage;         // the shader that declares it
     int location;            // the subroutine uniform's layout(location = L) in the GLSL 4.30 source
     std::string uniformName; // the `uniform int` the translation declared for it: holds the chosen layout(index = N)
+    std::vector<NamedValue> functions; // the subroutine functions it may call: name -> layout(index = N)
 };
 
 struct ProgramLayout {

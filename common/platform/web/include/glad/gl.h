@@ -113,6 +113,9 @@ void t10WebTexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei 
                       GLenum format, GLenum type, const void* pixels);
 void t10WebDeleteTextures(GLsizei n, const GLuint* textures);
 void t10WebGenerateMipmap(GLenum target);
+/* The draws, which the capture hook observes (gl_web.hpp setDrawHook; draw_observation_web.cpp). */
+void t10WebDrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices);
+void t10WebDrawArrays(GLenum mode, GLint first, GLsizei count);
 /* Uniform buffers padded to 16 bytes (WebGL checks the buffer against the block's std140 size). */
 void t10WebBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum usage);
 
@@ -122,6 +125,8 @@ void t10WebBufferData(GLenum target, GLsizeiptr size, const void* data, GLenum u
 
 #ifndef T10_WEB_GL_IMPLEMENTATION
 #define glUseProgram t10WebUseProgram
+#define glDrawElements t10WebDrawElements
+#define glDrawArrays t10WebDrawArrays
 #define glDeleteProgram t10WebDeleteProgram
 #define glGetUniformLocation t10WebGetUniformLocation
 #define glGetUniformfv t10WebGetUniformfv
