@@ -298,7 +298,8 @@
       section.appendChild(element("p", {}, "What the page cannot judge (not scored as right):"));
       var ul = section.appendChild(element("ul"));
       (Array.isArray(limits) ? limits : [limits]).forEach(function (item) {
-        ul.appendChild(element("li", {}, typeof item === "string" ? item : (item.text || item.reason || item.what || JSON.stringify(item))));
+        ul.appendChild(element("li", {}, typeof item === "string" ? item
+          : item.what ? item.what + (item.why ? ": " + item.why : "") : (item.text || JSON.stringify(item))));
       });
       box.appendChild(section);
     }
