@@ -9,7 +9,8 @@ SwiftShader), driven as a reader drives it (its buttons and its text, through th
   3. the luminance-weights mistake (step 3: Rec. 601's 0.299, 0.587, 0.114 in PostProcessInit.frag, the
      grader's test batch's "rec601") applied: the frame differs from A in more than --min-changed of the
      pixels by more than 4 of 255 (the key, and with it every pixel's exposure, moves); with
-     Module.t10Check in the page, "Check my work" names luminance-weights with its measured value;
+     Module.t10Check in the page, "Check my work" scores it under 100, puts step 3 first, names
+     luminance-weights with its measured value, and the announced status names it too;
   4. fixed: the frame is A again (within 2 of 255 at every pixel: the same shaders draw the same frame);
      with t10Check, the score is 100;
   5. a syntax error on a known line of PostProcess.frag: the error is listed at that line of the
@@ -265,6 +266,9 @@ def main():
             expect("luminance-weights" in s["report"] or "luminance weights" in s["report"],
                    f"the check does not name the luminance-weights mistake: {s['report'][:400]}")
             expect("0.299" in s["report"], f"the check does not report the measured weights (0.299, 0.587, 0.114): {s['report'][:400]}")
+            expect("Fix first: step 3" in s["report"] and "Score: 100" not in s["report"],
+                   f"the check does not put step 3 first, or scores the mistake 100: {s['report'][:300]}")
+            expect("luminance-weights" in s["status"], f"the announced result does not name the mistake: {s['status']!r}")
             print(f"   check: {s['status']}", flush=True)
         run.shot("3-mistake")
 

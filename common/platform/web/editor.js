@@ -258,9 +258,13 @@
     box.appendChild(element("p", { className: "t10-editor-score" }, "Score: " + formatValue(report.score) + " of 100"));
     var checks = report.checks || [];
     var failed = checks.filter(function (c) { return !c.passed; });
-    var first = report.fix_first || (failed.length ? "step" + stepsOf(failed[0]).replace(/^ \(steps? |\)$/g, " ") : "");
+    // The first step that loses points and the first failed check blamed for it, as make check says it.
+    var firstStep = (report.failed_steps || [])[0];
+    var blamed = failed.filter(function (c) { return (c.blames || c.steps || []).indexOf(firstStep) >= 0; })[0] || failed[0];
+    var first = report.fix_first ? String(report.fix_first).replace(/^fix first:\s*/i, "")
+      : firstStep !== undefined ? "step " + firstStep + (blamed ? " (" + (blamed.id || blamed.name) + ")" : "") : "";
     box.appendChild(element("p", { className: "t10-editor-first" },
-                            failed.length ? "Fix first: " + String(first).replace(/^fix first:\s*/i, "") : "Every check the page can make passes."));
+                            failed.length ? "Fix first: " + first + "." : "Every check the page can make passes."));
     if ((report.steps || []).length) {
       var table = element("table", { className: "t10-editor-steps" });
       table.appendChild(element("caption", {}, "Points per step"));
@@ -275,7 +279,7 @@
         var label = "step " + step.step;
         if (href) { var a = element("a", { href: href }, label); cell.appendChild(a); } else cell.textContent = label;
         row.appendChild(cell);
-        row.appendChild(element("td", {}, String(step.points)));
+        row.appendChild(element("td", {}, String(step.points) + (step.max_points !== undefined ? " of " + step.max_points : "")));
         row.appendChild(element("td", {}, step.passed ? "passed" : "lost" + ((step.failed_checks || []).length ? ": " + step.failed_checks.join(", ") : "")));
         body.appendChild(row);
       });
@@ -285,9 +289,8 @@
       box.appendChild(element("p", {}, "What failed:"));
       var list = box.appendChild(element("ul", { className: "t10-editor-failed" }));
       failed.forEach(function (check) {
-        var item = element("li", {}, (check.id || check.name || "a check") + stepsOf(check) +
-                           (check.diagnosis ? ": " + check.diagnosis : "") +
-                           (check.measured ? " (measured " + check.measured + (check.tolerance ? ", tolerance " + check.tolerance : "") + ")" : ""));
+        var item = element("li", {}, (check.id || check.name || "a check") + stepsOf(check) + (check.diagnosis ? ": " + check.diagnosis
+                           : check.measured ? ": measured " + check.measured + (check.tolerance ? ", tolerance " + check.tolerance : "") : ""));
         (check.mistakes || []).forEach(function (m) { item.appendChild(element("div", { className: "t10-editor-mistake" }, mistakeText(m))); });
         list.appendChild(item);
       });
