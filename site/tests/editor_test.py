@@ -25,7 +25,7 @@ SwiftShader), driven as a reader drives it (its buttons and its text, through th
      whole window, so without edit_page.js's listener nothing is deleted), and Tab moves on to Apply.
 With --axe AXE.JS, axe-core (axe_test.py's WCAG 2.1 A and AA rules) runs on the page with the editor open
 and its error listed (step 5), at --width in both schemes: 0 violations.
-Screenshots of the editor at each step go into --out (editor-*.png).
+Screenshots of the embed at each step go into --out (editor-*.jpg).
 
 It can fail: each frame comparison is made against a frame the same run measured, so an editor whose
 Apply does nothing fails step 3 (A unchanged), one that applies the wrong file or the wrong text fails
@@ -135,7 +135,8 @@ class Run:
         return json.loads(self.js(f"window.__t.diff({json.dumps(a)}, {json.dumps(b)}, {by})"))
 
     def shot(self, name):
-        """The embed (frame, controls and editor) as a PNG: the viewport made as tall as the page meanwhile."""
+        """The embed (frame, controls and editor) as a JPEG (PNG takes seconds for a tall one): the viewport made as
+        tall as the page meanwhile."""
         rect = json.loads(self.js(f"""(() => {{ const q = window.__t.live({json.dumps(self.stage)}).getBoundingClientRect();
             return JSON.stringify({{x: q.left + scrollX, y: q.top + scrollY, width: q.width, height: q.height,
                                     page: document.documentElement.scrollHeight}}); }})()"""))
@@ -143,7 +144,7 @@ class Run:
         self.browser.send("Emulation.setDeviceMetricsOverride", {"width": self.width, "height": page, "deviceScaleFactor": 1,
                                                                  "mobile": False}, self.session)
         try:
-            screenshot(self.browser, self.session, os.path.join(self.out, f"editor-{name}.png"), clip=rect)
+            screenshot(self.browser, self.session, os.path.join(self.out, f"editor-{name}.jpg"), clip=rect)
         finally:
             self.browser.send("Emulation.setDeviceMetricsOverride", {"width": self.width, "height": 900, "deviceScaleFactor": 1,
                                                                      "mobile": False}, self.session)
