@@ -261,24 +261,35 @@
     if (!box || !module || typeof module.t10Shaders !== "function" || typeof module.t10SetShader !== "function") return;
     var toggle = box.querySelector(".live-edit");
     var panel = box.querySelector(".live-editor-panel");
-    var opened = null;
+    // A restarted embed (the exercises' retry with another luminance format) gets a fresh editor over
+    // its new page; the button keeps its one listener.
+    live.t10EditFrame = frame;
+    live.t10EditorOpened = null;
+    panel.textContent = "";
+    panel.hidden = true;
+    toggle.setAttribute("aria-expanded", "false");
     box.hidden = false;
+    if (toggle.t10Bound) return;
+    toggle.t10Bound = true;
     toggle.addEventListener("click", function () {
       var open = toggle.getAttribute("aria-expanded") !== "true";
       toggle.setAttribute("aria-expanded", open ? "true" : "false");
       panel.hidden = !open;
       live.setAttribute("data-editor", open ? "open" : "closed");
-      if (!open || opened) {
-        if (open && opened) opened.then(function (editor) { if (editor) editor.cm.refresh(); });
+      if (!open || live.t10EditorOpened) {
+        if (open) live.t10EditorOpened.then(function (editor) {
+          if (editor) { editor.cm.refresh(); live.setAttribute("data-editor", "ready"); }
+        });
         return;
       }
-      opened = loadScript(EDITOR_BASE + "editor.js").then(function () {
+      var current = live.t10EditFrame;
+      live.t10EditorOpened = loadScript(EDITOR_BASE + "editor.js").then(function () {
         return window.T10Editor.create({
           container: panel, stageBase: live.getAttribute("data-src").replace(/index\.html$/, ""),
           codemirror: EDITOR_BASE, css: EDITOR_BASE + "editor.css",
           stepLink: function (step) { return document.getElementById("step-" + step) ? "#step-" + step : null; },
-          module: function () { return frame.contentWindow && frame.contentWindow.Module; },
-          frames: function () { var body = pageOf(frame); return body ? Number(body.dataset.t10Frames || 0) : 0; }
+          module: function () { return current.contentWindow && current.contentWindow.Module; },
+          frames: function () { var body = pageOf(current); return body ? Number(body.dataset.t10Frames || 0) : 0; }
         });
       }).then(function (editor) {
         live.t10Editor = editor;
