@@ -27,6 +27,7 @@ const cases = [  // [what, source, the lines refused]
   ["the counter changed in the body", "for (int i = 0; i < 5; ++i) {\n  i = 0;\n}", [1]],
   ["nested past the budget", "for (int i = 0; i < 100; ++i) {\n  for (int j = 0; j < 100; ++j) { }\n}", [2]],
   ["nested without braces", "for (int i = 0; i < 100; ++i)\n  for (int j = 0; j < 100; ++j) fY++;", [2]],
+  ["a loop spelt by token pasting", "#define LOOP(a, b) a ## b\nLOOP(wh, ile) (true) { }", [1]],
 ];
 
 let failures = 0;

@@ -138,6 +138,11 @@
       }
       loops.push({ line: line, count: count, start: match.index, end: bodyEnd });
     }
+    // The preprocessor's token pasting could spell a loop this check does not see (wh ## ile).
+    var pasting = /##/g;
+    while ((match = pasting.exec(text)))
+      found.push({ line: lineAt(text, match.index), message: "token pasting (##): it could build a loop the page cannot " +
+                   "bound, so the page refuses it, so that a shader cannot hang the browser" });
     // Nested loops multiply: each loop's iterations times those of the loops around it.
     loops.forEach(function (loop) {
       var total = loops.reduce(function (n, outer) {
