@@ -15,7 +15,8 @@ target_link_libraries(t10_web_check PUBLIC t10_common t10_reference_math PRIVATE
 set(T10_WEB_GRADE_ROOT ${T10_WEB_ROOT}/grade)
 target_compile_definitions(t10_web_check PRIVATE T10_GRADE_MISTAKES="${T10_WEB_GRADE_ROOT}/mistakes.tsv"
                                                  T10_GRADE_RUBRIC_DEFAULT="${T10_WEB_GRADE_ROOT}/rubric.txt")
-# One combined file, as t10-grade's and the core's (grader/CMakeLists.txt).
+# One combined file, as t10-grade's and the core's (grader/CMakeLists.txt): about 25 s of em++ once per
+# web build (measured on a loaded machine), shared by every page.
 set_target_properties(t10_web_check PROPERTIES UNITY_BUILD_BATCH_SIZE 0)
 # The rubric is packaged from a copy without its .txt, which the pages' packaging leaves out (T10Web.cmake).
 configure_file(${grader}/scoring/rubric.txt ${PROJECT_BINARY_DIR}/grade/rubric COPYONLY)

@@ -144,19 +144,20 @@ add_test(NAME "${workbench_test}"
 set_tests_properties("${workbench_test}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77)
 
 # The page's check agrees with t10-grade (tests/web/agreement.py) on a representative set of the grader
-# batches' shader-only mistakes, graded by the batch tests (grade_part1, grade_part3): a constant of the
-# frame (Part 1's middle grey), the luminance weights (Rec. 601, Part 3) and the blur's sigma (Part 3):
-# the same checks fail, the same mistake is named, its value within 1 %, the score within 2 points.
-# About 8 s alone. Every shader-only submission of the three batches: make web-agreement.
-set(agreement_test "web: Module.t10Check agrees with t10-grade on a middle grey, Rec. 601 weights and a sigma")
+# batches' shader-only mistakes, one per shader file of Part 3 (one page load), graded by the batch test
+# (grade_part3): the luminance weights (Rec. 601, PostProcessInit.frag), the white point
+# (PostProcess.frag) and the blur's sigma (Gauss.frag): the same checks fail, the same mistake is named,
+# its value within 1 %, the score within 2 points. Every shader-only submission of the three batches
+# (33): make web-agreement.
+set(agreement_test "web: Module.t10Check agrees with t10-grade on Rec. 601 weights, a white point and a sigma")
 set(GRADE_TEST_OUT ${PROJECT_BINARY_DIR}/grader/test-out)
 add_test(NAME "${agreement_test}"
          COMMAND ${T10_PYTHON_ENV} ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/web/agreement.py
                  --web ${T10_WEB_PAGES} --chromium ${T10_CHROMIUM} --source ${PROJECT_SOURCE_DIR}
                  --submissions ${GRADE_TEST_OUT}/submissions --reports ${GRADE_TEST_OUT}/reports --out ${WEB_OUT}/agreement
-                 --case 1 p1_middle_grey_1_0 --case 3 rec601 --case 3 sigma)
+                 --case 3 rec601 --case 3 white_point --case 3 sigma)
 set_tests_properties("${agreement_test}" PROPERTIES TIMEOUT 200 LABELS web SKIP_RETURN_CODE 77
-                     FIXTURES_REQUIRED "grade_part1;grade_part3")
+                     FIXTURES_REQUIRED grade_part3)
 
 # A browser without float render targets gets the message, not a black canvas.
 t10_add_web_test("without EXT_color_buffer_float the page says so" nofloat tutorial10_part1_tonemap)
