@@ -288,7 +288,16 @@ fuzz: fuzz-build
 test-asan: PACKAGES += $(TEST_PACKAGES)
 test-asan: deps
 	@[ -f build-asan/build.ninja ] || cmake --preset asan
-	cmake --build build-asan -j $(JOBS)
+	@# The web stages as make test builds them (into $(OUT)/web, beside this build; log in build-asan/web.log):
+	@# the web tests and the site's tests of the live embeds (keyboard, weight) need them. Without them
+	@# CI's fresh clone failed here, since test-asan runs before anything else has made $(OUT)/web.
+	@mkdir -p build-asan; \
+	( if command -v emcc >/dev/null; then $(MAKE) --no-print-directory web >build-asan/web.log 2>&1; \
+	  else echo "emcc is not installed: no web build (the web tests report themselves skipped)" >build-asan/web.log; fi ) & web=$$!; \
+	cmake --build build-asan -j $(JOBS); built=$$?; \
+	wait $$web || { tail -n 30 build-asan/web.log; echo "make test-asan: make web failed (log: build-asan/web.log)"; exit 1; }; \
+	[ $$built -eq 0 ] || exit $$built; \
+	grep -h '^make web: built\|^emcc is not' build-asan/web.log || true
 	@# The grader's tests run here too: FLIP into this build's own venv and JPlag beside it (else they skip, saying why), made
 	@# with Debian's interpreter where there is one, which every user may run: the as-user fork-bomb test
 	@# skips with a venv of a Python under a 0700 home (pyenv's under /root), and this suite skips none.

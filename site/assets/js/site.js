@@ -10,8 +10,9 @@
     return window.matchMedia && window.matchMedia("(prefers-color-scheme: dark)").matches ? "dark" : "light";
   }
 
-  // The formulas, a few blocks of the page at a time (about 30 ms, then the browser may handle input and
-  // paint): one pass over the tutorial page's 58 formulas held the main thread for a quarter of a second.
+  // The formulas, a few blocks of the page at a time (about 10 ms, then the browser may handle input and
+  // paint): one pass over the tutorial page's 58 formulas held the main thread for a quarter of a second,
+  // and 30 ms slices were 120 ms on Lighthouse's phone (a CPU four times slower), each a blocking task.
   // data-math is "rendering" meanwhile, then "done" (or "unavailable" without KaTeX); then `done()`.
   function renderMath(done) {
     var content = document.querySelector(".content");
@@ -33,7 +34,7 @@
     var blocks = Array.prototype.slice.call(content.children);
     root.setAttribute("data-math", "rendering");
     (function next() {
-      var until = performance.now() + 30;
+      var until = performance.now() + 10;
       while (blocks.length && performance.now() < until) renderMathInElement(blocks.shift(), options);
       if (blocks.length) return setTimeout(next, 0);
       // Last, the text directly in the page's column (kramdown writes a displayed formula there, outside
