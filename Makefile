@@ -26,7 +26,7 @@ PACKAGES := cmake ninja-build g++ pkg-config python3 libglfw3-dev libglm-dev lib
 BROWSER_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] && echo chromium-browser || echo chromium)
 FIREFOX_PACKAGE := $(shell . /etc/os-release 2>/dev/null; [ "$$ID" = ubuntu ] || echo firefox-esr)
 TEST_PACKAGES := catch2 xvfb xauth time git bubblewrap python3-yaml python3-jsonschema nodejs glslang-tools emscripten \
-                 default-jre-headless maven jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex \
+                 default-jre-headless maven jekyll ruby-html-proofer $(BROWSER_PACKAGE) $(FIREFOX_PACKAGE) libjs-katex fonts-katex libjs-codemirror \
                  python3-pygments fonts-dejavu-core webp
 SUDO := $(shell [ "$$(id -u)" -eq 0 ] || echo sudo)
 
@@ -184,7 +184,7 @@ WEB_BUILD := build-$(WEB_PRESET)
 WEB_PORT  ?= 8000
 WEB_ENV   := NODE_PATH=/usr/share/nodejs
 .PHONY: web web-serve
-web: PACKAGES += emscripten
+web: PACKAGES += emscripten libjs-codemirror
 web: deps
 	@case "$(WEB_PRESET)" in web|web-release) ;; \
 	 *) echo "make web: WEB_PRESET=$(WEB_PRESET) is not a web preset (web: -O1, the default; web-release: -O3)"; exit 2;; esac
@@ -209,7 +209,7 @@ web-serve:
 .PHONY: site site-serve
 # make site installs the site's own tools (a build configured before they were installed looks again);
 # chromium measures the web stages' first frames when make web has built them ($(OUT)/web/).
-SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex python3-pygments fonts-dejavu-core webp
+SITE_PACKAGES := jekyll ruby-html-proofer $(BROWSER_PACKAGE) libjs-katex fonts-katex libjs-codemirror python3-pygments fonts-dejavu-core webp
 site site-serve: PACKAGES += $(SITE_PACKAGES)
 site: configure
 	@! grep -Eq '^T10_(JEKYLL|CHROMIUM|CWEBP):FILEPATH=.*NOTFOUND' $(BUILD)/CMakeCache.txt || cmake $(BUILD) >/dev/null

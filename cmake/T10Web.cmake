@@ -131,4 +131,76 @@ function(t10_web_stage target folder)
                        DEPENDS ${page} VERBATIM)
     add_custom_target(${target}_page DEPENDS ${out}/index.html)
     add_dependencies(${target} ${target}_page)
+    t10_web_editor(${target} ${out})
+endfunction()
+
+# The shader editor of the pages (issue 52: the stage page with ?edit=1, and the site's embeds, which
+# copy the same files through tools/build_site): CodeMirror 5 from Debian's libjs-codemirror, and the
+# editor's own files (common/platform/web/editor.js and .css), copied into T10_WEB_OUTPUT_DIR/editor/ by
+# build rules (as the pages are: `make web` puts them back when the output is gone), shared by every
+# stage's page. Without CodeMirror the pages still build; their editor says which package is missing.
+set(T10_CODEMIRROR_DIR /usr/share/javascript/codemirror CACHE PATH "CodeMirror 5 (Debian: libjs-codemirror)")
+set(t10_web_editor_outputs "")
+foreach(file common/platform/web/editor.js common/platform/web/editor.css)
+    get_filename_component(name ${file} NAME)
+    list(APPEND t10_web_editor_outputs ${T10_WEB_OUTPUT_DIR}/editor/${name})
+    add_custom_command(OUTPUT ${T10_WEB_OUTPUT_DIR}/editor/${name}
+                       COMMAND ${CMAKE_COMMAND} -E copy ${PROJECT_SOURCE_DIR}/${file} ${T10_WEB_OUTPUT_DIR}/editor/${name}
+                       DEPENDS ${PROJECT_SOURCE_DIR}/${file} VERBATIM)
+endforeach()
+foreach(file lib/codemirror.js lib/codemirror.css mode/clike/clike.js)
+    if(NOT EXISTS ${T10_CODEMIRROR_DIR}/${file})
+        message(WARNING "web build: ${T10_CODEMIRROR_DIR}/${file} not found, so the pages' shader editor "
+                        "will say it is missing (Debian: libjs-codemirror; or set T10_CODEMIRROR_DIR)")
+        break()
+    endif()
+    get_filename_component(name ${file} NAME)
+    list(APPEND t10_web_editor_outputs ${T10_WEB_OUTPUT_DIR}/editor/codemirror/${name})
+    add_custom_command(OUTPUT ${T10_WEB_OUTPUT_DIR}/editor/codemirror/${name}
+                       COMMAND ${CMAKE_COMMAND} -E copy ${T10_CODEMIRROR_DIR}/${file} ${T10_WEB_OUTPUT_DIR}/editor/codemirror/${name}
+                       DEPENDS ${T10_CODEMIRROR_DIR}/${file} VERBATIM)
+endforeach()
+add_custom_target(t10_web_editor_files DEPENDS ${t10_web_editor_outputs})
+
+# t10_web_editor(<target> <out>): where the stage's editor starts, as `make student` starts a part: the
+# shaders of the stage before it in T10_STAGES (Part 0's for Part 1, ...), copied into <out>/start/
+# and listed in <out>/edit.json with the stage's part ("part1": the folder student/part1/ the editor's
+# download is named after). A stage with none before it (Part 0, a student's own folder) starts from
+# its own shaders. edit.json is written at configure time into the build folder and, like the start
+# files, copied by build rules.
+function(t10_web_editor target out)
+    list(FIND T10_STAGES ${target} index)
+    set(start "")
+    if(index GREATER 0)
+        math(EXPR previous "${index} - 1")
+        list(GET T10_STAGES ${previous} start)
+    endif()
+    set(part ${target})
+    if(target MATCHES "(^|_)(part[0-9])($|_)")
+        set(part ${CMAKE_MATCH_2})
+    endif()
+    set(files "")
+    set(outputs ${out}/edit.json)
+    if(start)
+        file(GLOB shaders CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${start}/*.vert ${PROJECT_SOURCE_DIR}/${start}/*.frag)
+        foreach(shader IN LISTS shaders)
+            get_filename_component(name ${shader} NAME)
+            add_custom_command(OUTPUT ${out}/start/${name} COMMAND ${CMAKE_COMMAND} -E copy ${shader} ${out}/start/${name}
+                               DEPENDS ${shader} VERBATIM)
+            list(APPEND outputs ${out}/start/${name})
+            list(APPEND files "\"${name}\"")
+        endforeach()
+        list(JOIN files ", " files)
+        set(start "\"${start}\"")
+    else()
+        set(start null)
+    endif()
+    set(plan ${CMAKE_CURRENT_BINARY_DIR}/pages/${target}/edit.json)
+    file(CONFIGURE OUTPUT ${plan}
+         CONTENT "{\"stage\": \"${target}\", \"part\": \"${part}\", \"start\": ${start}, \"files\": [${files}]}\n")
+    add_custom_command(OUTPUT ${out}/edit.json COMMAND ${CMAKE_COMMAND} -E copy ${plan} ${out}/edit.json DEPENDS ${plan} VERBATIM)
+    add_custom_target(${target}_editor DEPENDS ${outputs})
+    add_dependencies(${target} ${target}_editor t10_web_editor_files)
+    target_link_options(${target} PRIVATE "SHELL:--post-js ${PROJECT_SOURCE_DIR}/common/platform/web/edit_page.js")
+    set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${PROJECT_SOURCE_DIR}/common/platform/web/edit_page.js)
 endfunction()

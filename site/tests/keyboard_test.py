@@ -15,6 +15,13 @@ For every embed on the page, one after the other:
     operated with a key (Space on a checkbox, ArrowDown on a choice, ArrowRight on a slider): the
     embed draws a new frame and its status line names the option and the value.
 
+With --edit-stage STAGE, that embed's shader editor too (issue 52): Tab from its last control reaches
+"Edit the shaders", Enter opens the editor, Tab reaches the first file's button and Enter puts the focus
+in the text (named, with a focus ring); Tab there indents (the text changes, the focus stays); Escape,
+then Tab, leaves the text forwards to Apply, and Escape, then Shift+Tab, backwards (no keyboard trap);
+Enter on Apply compiles the edit and the result is announced (the status line, role=status, says what
+was applied). The axe run of --axe then has this editor open.
+
 It can fail: on the site before issue 50 (commit 2cee4be) focus never left a running embed's canvas:
 Tab, Shift+Tab and Escape all left document.activeElement on the canvas (emscripten's GLFW cancels
 Tab's default on the window), the first embed failed there, and the buttons shared one name.
@@ -41,6 +48,7 @@ SKIP = 77
 KEYS = {  # key: (code, windows virtual key code, text typed)
     "Tab": ("Tab", 9, ""), "Enter": ("Enter", 13, "\r"), "Escape": ("Escape", 27, ""), " ": ("Space", 32, " "),
     "ArrowDown": ("ArrowDown", 40, ""), "ArrowRight": ("ArrowRight", 39, ""), "w": ("KeyW", 87, "w"),
+    "Backspace": ("Backspace", 8, ""),
 }
 SHIFT = 8
 
@@ -190,6 +198,75 @@ def check_embed(browser, session, stage, timeout, need_controls, leave):
     return problems + check_controls(browser, session, stage, need_controls, leave)
 
 
+# The focus in an embed's shader editor: the focused element's classes, whether it is CodeMirror's text
+# (and then its name and the editor's focus ring), the text of the file shown and the status line.
+EDITOR_FOCUS = r"""
+((stage) => {
+  const live = document.querySelector(`.live[data-stage="${stage}"]`);
+  const e = document.activeElement, cm = e && e.closest ? e.closest('.CodeMirror') : null;
+  const wrapper = live.querySelector('.CodeMirror');
+  const ring = (n) => { if (!n) return 0; const s = getComputedStyle(n); return s.outlineStyle === 'none' ? 0 : parseFloat(s.outlineWidth); };
+  return JSON.stringify({cls: e ? String(e.className || '') : '', inText: !!cm && live.contains(cm), label: e ? e.getAttribute('aria-label') || '' : '',
+    ring: cm ? ring(cm) : ring(e), editor: live.dataset.editor || '', text: wrapper ? wrapper.CodeMirror.getValue() : '',
+    status: (live.querySelector('.t10-editor-status') || {}).textContent || '',
+    statusRole: (live.querySelector('.t10-editor-status') || {getAttribute: () => ''}).getAttribute('role')});
+})
+"""
+
+
+def check_editor(browser, session, stage):
+    """The embed's shader editor from the keyboard (the focus is on its last control, or its canvas)."""
+    def at():
+        return json.loads(evaluate(browser, session, f"{EDITOR_FOCUS}({json.dumps(stage)})"))
+
+    def expect_focus(check, what):
+        return cdp.wait_until(at, check, 5, f"{stage}: {what}", lambda f: f": the focus is on {f['cls']!r}", interval=0.05)
+
+    try:
+        press(browser, session, "Tab")
+        expect_focus(lambda f: "live-edit" in f["cls"], "Tab after the controls does not reach \"Edit the shaders\"")
+        press(browser, session, "Enter")
+        cdp.wait_until(at, lambda f: f["editor"] in ("ready", "error"), 60, f"{stage}: Enter did not open the editor",
+                       lambda f: f": {f['status']}")
+        if at()["editor"] != "ready":
+            return [f"{stage}: the editor did not start: {at()['status']}"]
+        press(browser, session, "Tab")
+        expect_focus(lambda f: "t10-editor-file" in f["cls"], "Tab from \"Edit the shaders\" does not reach a file's button")
+        press(browser, session, "Enter")
+        f = expect_focus(lambda f: f["inText"], "Enter on a file's button does not put the focus in its text")
+        problems = []
+        if not f["label"]:
+            problems.append(f"{stage}: the editor's text has no name (aria-label)")
+        if f["ring"] < 2:
+            problems.append(f"{stage}: the focused editor shows no focus ring (outline {f['ring']} px)")
+        before = f["text"]
+        press(browser, session, "Tab")
+        f = expect_focus(lambda f: f["inText"] and f["text"] != before, "Tab in the text does not indent (or leaves it)")
+        press(browser, session, "Escape")
+        press(browser, session, "Tab")
+        expect_focus(lambda f: "t10-editor-apply" in f["cls"], "Escape, then Tab, does not leave the text for Apply (a keyboard trap)")
+        press(browser, session, "Tab", SHIFT)
+        expect_focus(lambda f: f["inText"], "Shift+Tab from Apply does not come back to the text")
+        press(browser, session, "Escape")
+        press(browser, session, "Tab", SHIFT)
+        expect_focus(lambda f: not f["inText"], "Escape, then Shift+Tab, does not leave the text backwards (a keyboard trap)")
+        press(browser, session, "Tab")
+        expect_focus(lambda f: f["inText"], "Tab does not come back to the text")
+        press(browser, session, "Escape")
+        press(browser, session, "Tab")
+        expect_focus(lambda f: "t10-editor-apply" in f["cls"], "Escape, then Tab, does not reach Apply")
+        press(browser, session, "Enter")
+        f = cdp.wait_until(at, lambda f: "Applied" in f["status"] or "error" in f["status"], 60,
+                           f"{stage}: Enter on Apply announced no result", lambda f: f": {f['status']!r}")
+        if f["statusRole"] != "status" or "Applied" not in f["status"]:
+            problems.append(f"{stage}: Apply's result {f['status']!r} (role {f['statusRole']!r}) is not an announced application")
+        else:
+            print(f"{stage}: editor from the keyboard: {f['status']}", flush=True)
+        return problems
+    except Failure as e:
+        return [str(e)]
+
+
 def check_controls(browser, session, stage, need_controls, leave):
     """Each control: reached by Tab from the canvas onwards, named in words, focus ring, operated by a key."""
     problems = []
@@ -240,6 +317,7 @@ def main():
     ap.add_argument("--controls-stage", action="append", default=[], help="a stage whose embed must offer controls")
     ap.add_argument("--leave", action="append", default=[], metavar="OPTION",
                     help="a control reached and named but not operated (a value of it stops the embed)")
+    ap.add_argument("--edit-stage", action="append", default=[], help="a stage whose embed's shader editor is used too")
     ap.add_argument("--width", type=int, default=800,
                     help="the window's width while the embeds run (they draw at their width: 800 draws half the pixels of 1280)")
     ap.add_argument("--axe", help="axe.min.js: check the page with its embeds running too")
@@ -271,6 +349,8 @@ def main():
             raise Failure(f"{args.page} has no live embed")
         for stage in stages:
             found = check_embed(browser, session, stage, 120, args.controls_stage, args.leave)
+            if stage in args.edit_stage and not found:
+                found = check_editor(browser, session, stage)
             problems += found
             print(f"{stage}: {'ok' if not found else str(len(found)) + ' problem(s)'}", flush=True)
         if args.axe:

@@ -11,6 +11,8 @@
    - the images the pages show, rendered by the stages  -> assets/images/ (PNG, and WebP at the widths
                                                            the pages offer, made by Debian's cwebp)
    - KaTeX (Debian's libjs-katex and fonts-katex)        -> assets/katex/
+   - the embeds' shader editor: CodeMirror 5 (Debian's libjs-codemirror) and common/platform/web/'s
+     editor.js and editor.css                             -> assets/editor/
    - the web stages' sizes and first-frame times         -> _data/web.json (web_stages.py)
 3. Checks every excerpt and figure the pages ask for exists (an error names the page and line).
 4. Runs `jekyll build` into the destination and fails on any warning it prints.
@@ -551,6 +553,23 @@ def copy_katex(katex, dest):
         raise SiteError(f"{fonts} holds no KaTeX fonts: apt-get install fonts-katex")
 
 
+# --- The shader editor (issue 52) ------------------------------------------------------------------
+
+# The files the editor loads, flat in assets/editor/ (the layout cmake/T10Web.cmake gives out/web/editor/).
+CODEMIRROR_FILES = ["lib/codemirror.js", "lib/codemirror.css", "mode/clike/clike.js"]
+EDITOR_FILES = ["editor.js", "editor.css"]
+
+
+def copy_editor(codemirror, source_root, dest):
+    os.makedirs(dest, exist_ok=True)
+    for rel in CODEMIRROR_FILES:
+        if not os.path.isfile(os.path.join(codemirror, rel)):
+            raise SiteError(f"{codemirror}/{rel} is missing: apt-get install libjs-codemirror")
+        shutil.copyfile(os.path.join(codemirror, rel), os.path.join(dest, os.path.basename(rel)))
+    for name in EDITOR_FILES:
+        shutil.copyfile(os.path.join(source_root, "common", "platform", "web", name), os.path.join(dest, name))
+
+
 # --- Jekyll -------------------------------------------------------------------------------------
 
 # Jekyll empties its destination before writing: build/site/ holds nothing else (CMake's binary
@@ -592,6 +611,7 @@ def main():
                     help="take the rendered images and --help texts from an earlier work folder "
                          "instead of running the binaries (tests)")
     ap.add_argument("--katex", default="/usr/share/javascript/katex", help="KaTeX distribution")
+    ap.add_argument("--codemirror", default="/usr/share/javascript/codemirror", help="CodeMirror 5 distribution")
     ap.add_argument("--jekyll", default="jekyll", help="jekyll executable")
     ap.add_argument("--cwebp", default="cwebp", help="cwebp executable (Debian: webp)")
     ap.add_argument("--web", help="the web stages (make web: out/web), copied into the site when built")
@@ -666,6 +686,7 @@ def main():
         with open(os.path.join(data, name), "w", encoding="utf-8") as f:
             json.dump(value, f, indent=1, ensure_ascii=False)
     copy_katex(args.katex, os.path.join(work, "assets", "katex"))
+    copy_editor(args.codemirror, source_root, os.path.join(work, "assets", "editor"))
 
     # 5. Jekyll.
     jekyll_started = time.monotonic()

@@ -111,8 +111,10 @@ def web_data(web_dir, names, measurements_path, log):
 
 
 def copy_stages(web_dir, names, dest):
-    """Copies each built stage into DEST/web/<stage>/ (after jekyll, which empties DEST first)."""
-    for name in available(web_dir, names):
+    """Copies each built stage into DEST/web/<stage>/ (after jekyll, which empties DEST first), and the
+    shader editor the stage pages open with ?edit=1 (WEB/editor/, cmake/T10Web.cmake) into DEST/web/editor/."""
+    stages = available(web_dir, names)
+    for name in stages + (["editor"] if stages and os.path.isdir(os.path.join(web_dir, "editor")) else []):
         target = os.path.join(dest, "web", name)
         if os.path.isdir(target):
             shutil.rmtree(target)

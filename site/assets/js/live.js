@@ -6,7 +6,9 @@
 // ranges, choices: the stage's command-line options), and every change goes through Module.t10Set,
 // the same parser and checks as the command line. Where the browser lacks WebGL2 or float render
 // targets, or the site is opened from the disk, the picture stays and the bar says why.
-// State for tests: each .live element's data-state is idle, loading, rendered, error or unavailable.
+// Once it runs, "Edit the shaders" opens the shader editor (setupEditor: issue 52).
+// State for tests: each .live element's data-state is idle, loading, rendered, error or unavailable;
+// data-editor is open (loading), ready (the work applied), closed or error.
 (function () {
   "use strict";
 
@@ -281,6 +283,69 @@
     box.appendChild(status);
   }
 
+  // "Edit the shaders" (issue 52): shown once the embed runs, when its page offers the shader contract
+  // (Module.t10Shaders and t10SetShader); it opens the shader editor (assets/editor/editor.js, CodeMirror 5
+  // from Debian's libjs-codemirror, which the site build copies in) in the panel under the controls.
+  var EDITOR_BASE = "assets/editor/";
+
+  function setupEditor(live, frame) {
+    var box = live.querySelector(".live-editor");
+    var module = frame.contentWindow && frame.contentWindow.Module;
+    if (!box || !module || typeof module.t10Shaders !== "function" || typeof module.t10SetShader !== "function") return;
+    var toggle = box.querySelector(".live-edit");
+    var panel = box.querySelector(".live-editor-panel");
+    // A restarted embed (the exercises' retry with another luminance format) gets a fresh editor over
+    // its new page; the button keeps its one listener.
+    live.t10EditFrame = frame;
+    live.t10EditorOpened = null;
+    panel.textContent = "";
+    panel.hidden = true;
+    toggle.setAttribute("aria-expanded", "false");
+    box.hidden = false;
+    if (toggle.t10Bound) return;
+    toggle.t10Bound = true;
+    toggle.addEventListener("click", function () {
+      var open = toggle.getAttribute("aria-expanded") !== "true";
+      toggle.setAttribute("aria-expanded", open ? "true" : "false");
+      panel.hidden = !open;
+      live.setAttribute("data-editor", open ? "open" : "closed");
+      if (!open || live.t10EditorOpened) {
+        if (open) live.t10EditorOpened.then(function (editor) {
+          if (editor) { editor.cm.refresh(); live.setAttribute("data-editor", "ready"); }
+        });
+        return;
+      }
+      var current = live.t10EditFrame;
+      live.t10EditorOpened = loadScript(EDITOR_BASE + "editor.js").then(function () {
+        return window.T10Editor.create({
+          container: panel, stageBase: live.getAttribute("data-src").replace(/index\.html$/, ""),
+          codemirror: EDITOR_BASE, css: EDITOR_BASE + "editor.css",
+          stepLink: function (step) { return document.getElementById("step-" + step) ? "#step-" + step : null; },
+          module: function () { return current.contentWindow && current.contentWindow.Module; },
+          frames: function () { var body = pageOf(current); return body ? Number(body.dataset.t10Frames || 0) : 0; }
+        });
+      }).then(function (editor) {
+        live.t10Editor = editor;
+        return editor.ready.then(function () { live.setAttribute("data-editor", "ready"); return editor; });
+      }, function (error) {
+        if (!panel.querySelector(".t10-editor-status")) panel.textContent = "The shader editor could not start: " + error.message;
+        live.setAttribute("data-editor", "error");
+        return null;
+      });
+    });
+  }
+
+  function loadScript(url) {
+    return new Promise(function (resolve, reject) {
+      if (window.T10Editor) return resolve();
+      var script = document.createElement("script");
+      script.src = url;
+      script.onload = function () { resolve(); };
+      script.onerror = function () { reject(new Error(url + " could not be loaded")); };
+      document.head.appendChild(script);
+    });
+  }
+
   function failed(live, frame, state, page) {
     var error = page && page.ownerDocument.getElementById("t10-error");
     var message = state === "timeout" ? "The live page did not draw a frame within " + LOAD_TIMEOUT_MS / 1000 + " s."
@@ -289,6 +354,8 @@
     if (frame.parentNode) frame.parentNode.removeChild(frame);
     var box = live.querySelector(".live-controls");
     if (box) box.textContent = "";
+    var editor = live.querySelector(".live-editor");
+    if (editor) editor.hidden = true;
     setState(live, "error", message + " The picture above is the frame the build rendered.");
     // Without EXT_texture_norm16 (no GL_R16 in this WebGL2) the exercises can still run with step 40's
     // R16F luminance texture: offered, never switched to silently.
@@ -345,6 +412,7 @@
                " s in this browser. Drag to look around, scroll to zoom, WASD and Q/E to move (with the frame focused;" +
                " Tab or Escape leaves it).");
       buildControls(live, frame);
+      setupEditor(live, frame);
       // Started from its button, the reader's focus waited on the status line: it moves to the frame,
       // whose keys move the camera.
       var note = live.querySelector(".live-note");
