@@ -131,8 +131,11 @@ run: build
 # Java and Maven before the rest: grade-deps-or-skip fetches JPlag's jars with mvn beside the build, while the
 # other test packages are still being installed.
 test: PACKAGES += catch2 python3-venv default-jre-headless maven
+AXE_WARNING := warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so
 test: deps
-	@$(MAKE) --no-print-directory site-deps || echo "warning: axe-core could not be installed from npm: the site's accessibility tests will fail and say so"
+	@# axe-core's npm ci runs beside the build below; first, alone, only where npm itself must be installed
+	@# (apt-get then, which must not run beside the test packages' apt-get).
+	@command -v npm >/dev/null || $(MAKE) --no-print-directory site-deps || echo "$(AXE_WARNING)"
 	@missing=$$(for p in $(TEST_PACKAGES); do dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed' || printf '%s ' $$p; done); \
 	if [ -n "$$missing" ]; then \
 	    [ -z "$(SUDO)" ] || $(SUDO) true || exit 1; \
@@ -140,11 +143,12 @@ test: deps
 	    $(MAKE) --no-print-directory deps PACKAGES="$$missing" >$(BUILD)/test-packages.log 2>&1 & packages=$$!; \
 	fi; \
 	$(MAKE) --no-print-directory grade-deps-or-skip & venv=$$!; \
+	{ $(MAKE) --no-print-directory site-deps || echo "$(AXE_WARNING)"; } & axe=$$!; \
 	mkdir -p $(BUILD); \
 	( if [ -n "$$missing" ]; then while kill -0 $$packages 2>/dev/null; do sleep 2; done; fi; \
 	  if command -v emcc >/dev/null; then $(MAKE) --no-print-directory web >$(BUILD)/web.log 2>&1; \
 	  else echo "emcc is not installed: no web build (the web tests report themselves skipped)" >$(BUILD)/web.log; fi ) & web=$$!; \
-	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; \
+	$(MAKE) --no-print-directory build; built=$$?; wait $$venv; wait $$axe; \
 	if [ -n "$$missing" ] && ! wait $$packages; then \
 	    tail -n 20 $(BUILD)/test-packages.log; echo "make test: installing $$missing failed (log: $(BUILD)/test-packages.log)"; exit 1; \
 	fi; \

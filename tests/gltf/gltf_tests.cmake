@@ -15,7 +15,11 @@ target_compile_definitions(t10_gltf_tests PRIVATE T10_TEST_FIXTURE_DIR="${CMAKE_
 catch_discover_tests(t10_gltf_tests TEST_PREFIX "gltf loader: "
                      PROPERTIES FIXTURES_REQUIRED gltf_fixtures ENVIRONMENT T10_GLTF_FIXTURES=${GLTF_FIXTURES})
 
-# Renders: <fixture><form>_<camera>.exr for the three forms of each fixture.
+# Renders: <fixture><form>_<camera>.exr for the three forms of each fixture, the 30 of them as runs of
+# one process (the stage's --then; each run loads its own scene): 0.9 CPU s instead of 3.1 for a
+# process each, the same EXR files (cmp). A run that fails ends the process with its exit code, and
+# "gltf measured" reads every file.
+set(gltf_runs "")
 foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "cameras;framing" "geometry;front"
              "textures;front" "materials;front" "warnings;front" "unit_cube;framing")
     list(GET spec 0 name)
@@ -26,13 +30,17 @@ foreach(spec "emissive_cubes;front" "lights;top" "cameras;left" "cameras;high" "
         else()
             set(file ${GLTF_FIXTURES}/${name}${form}.gltf)
         endif()
-        add_test(NAME "gltf render: ${name}${form} ${camera}"
-                 COMMAND ${BIN}/${GLTF_STAGE} --backend egl --size 320x180 --frames 1 --scene ${file} --camera ${camera}
-                         --exr ${GLTF_RENDERS}/${name}${form}_${camera}.exr)
-        set_tests_properties("gltf render: ${name}${form} ${camera}"
-                             PROPERTIES FIXTURES_SETUP gltf_renders FIXTURES_REQUIRED gltf_fixtures)
+        if(gltf_runs)
+            list(APPEND gltf_runs --then)
+        endif()
+        set(last ${GLTF_RENDERS}/${name}${form}_${camera}.exr)
+        list(APPEND gltf_runs --headless --backend egl --size 320x180 --frames 1 --scene ${file} --camera ${camera} --exr ${last})
     endforeach()
 endforeach()
+add_test(NAME "gltf render: every fixture in its three forms (one process)"
+         COMMAND ${EXPECT} 0 "^wrote ${last}" -- ${BIN}/${GLTF_STAGE} ${gltf_runs})
+set_tests_properties("gltf render: every fixture in its three forms (one process)"
+                     PROPERTIES FIXTURES_SETUP gltf_renders FIXTURES_REQUIRED gltf_fixtures)
 add_executable(t10_gltf_render_tests gltf/test_gltf_render.cpp)
 target_link_libraries(t10_gltf_render_tests PRIVATE t10_common t10_flags t10_catch)
 catch_discover_tests(t10_gltf_render_tests TEST_PREFIX "gltf measured: "

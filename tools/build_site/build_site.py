@@ -308,10 +308,10 @@ def stage_diffs(stages):
 
 # --- Binaries -----------------------------------------------------------------------------------
 
-def run(cmd, timeout=60, cwd=None):
+def run(cmd, timeout=60, cwd=None, env=None):
     try:
         result = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                timeout=timeout, cwd=cwd)
+                                timeout=timeout, cwd=cwd, env=env)
     except FileNotFoundError:
         raise SiteError(f"{cmd[0]}: not found (build the stages first: cmake --build build)")
     except subprocess.TimeoutExpired:
@@ -345,6 +345,12 @@ def cli_help(stages, bin_dir):
 # are globals the runs would share).
 THEN = "--then"
 NO_THEN = {"extras"}
+# make test's llvmpipe skips LLVM's optimisation passes (GALLIVM_PERF=nopt, Makefile), which pays where
+# frames are small and compiling the shaders is most of the work; the site's frames are large, and
+# drawing them with unoptimised shader code costs more than optimising it: the site's renders keep
+# the driver's defaults (Part 1's frame and its ev view at 1280x720: 1.6 CPU s with nopt, 1.2
+# without). The frames are the same bits either way (the test "llvmpipe: ... the same bits").
+RENDER_ENV = {k: v for k, v in os.environ.items() if k != "GALLIVM_PERF"}
 
 
 def render_images(renders, bin_dir, images_dir, source_root=None):
@@ -368,7 +374,7 @@ def render_images(renders, bin_dir, images_dir, source_root=None):
                 cmd += shlex.split(extra)
                 outs.append(out)
             started = time.monotonic()
-            run(cmd, timeout=120, cwd=source_root)
+            run(cmd, timeout=120, cwd=source_root, env=RENDER_ENV)
             for out in outs:
                 if not os.path.isfile(out):
                     raise SiteError(f"{' '.join(cmd)} wrote no {out}")
