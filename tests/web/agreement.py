@@ -157,6 +157,9 @@ def run_part(args, page, part, entries, results):
           f"{baseline['grader']} in t10-grade" + (f"; the page's renderer fails {renderer}" if renderer else ""),
           flush=True)
     results["renderer"][stage] = renderer
+    if args.reference_score is not None and baseline["page"] != args.reference_score:
+        raise Failure(f"{stage} on {args.renderer}: the page scores the reference's shaders {baseline['page']}, "
+                      f"not {args.reference_score}; its checks that fail: {renderer}")
     for name, submission, report_path in entries:
         shaders = {n: open(os.path.join(submission, n), encoding="utf-8", errors="surrogateescape").read()
                    for n in reference if os.path.isfile(os.path.join(submission, n))}
@@ -200,6 +203,7 @@ def main():
     ap.add_argument("--reports", required=True)
     ap.add_argument("--case", nargs=2, action="append", default=[], metavar=("PART", "NAME"))
     ap.add_argument("--all", action="store_true", help="every shader-only submission graded in --reports")
+    ap.add_argument("--reference-score", type=int, help="fail unless the page scores each part's reference this")
     ap.add_argument("--sweep", help="make grade-sweep's output folder: its shader-only submissions too")
     ap.add_argument("--chromium", default="chromium")
     ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="llvmpipe")
