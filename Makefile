@@ -49,7 +49,7 @@ help:
 	@echo "make site-deps  install the site tests' npm tools (axe-core, pinned) into $(BUILD)/site-axe/"
 	@echo "make site-audit  Lighthouse (mobile) on the tutorial page: accessibility 100, performance, LCP and bytes printed"
 	@echo "make site-live  check the site's live embeds of the web stages (make web first) in headless Chromium and Firefox ESR"
-	@echo "make web-agreement  the page's check (Module.t10Check) against t10-grade on every shader-only mistake of the grader's batches"
+	@echo "make web-agreement  the page's check (Module.t10Check) against t10-grade on every shader-only mistake of the grader's batches and of make grade-sweep (WEB_RENDERER=swiftshader: no GPU)"
 	@echo "make site-serve  serve $(BUILD)/site on http://127.0.0.1:4000/ (SITE_PORT=N), rebuilding it only when stale"
 	@echo "make test-asan  build and run every test with ASan and UBSan (build-asan/)"
 	@echo "make fuzz-build  build the libFuzzer targets (tga, exr, cli, glsl_es, gltf; clang, ASan, UBSan) into $(BUILD)/fuzz/"
@@ -403,15 +403,19 @@ grade-sweep: build grade-deps
 	python3 grader/tests/sweep.py $(BIN)/t10-grade $(CURDIR) $(OUT)/grade-sweep $(GRADE_JOBS)
 
 # make web-agreement: the page's check (Module.t10Check) against t10-grade on every shader-only
-# submission of the grader's test batches (issue 52, tests/web/agreement.py; make test runs three of
-# them): the batches graded by their ctest tests, then each submission's shaders set in its part's page
-# and checked there. About 4 minutes after the build (the batches), 40 s of it in Chromium.
+# submission of the grader's test batches and of make grade-sweep (issue 52, tests/web/agreement.py; make
+# test runs three of them): the batches graded by their ctest tests and the sweep by sweep.py, then each
+# submission's shaders set in its part's page and checked there. About 8 minutes after the build (the
+# batches and the sweep), 3 of them in Chromium. WEB_RENDERER=swiftshader: Chromium without a GPU.
+WEB_RENDERER ?= llvmpipe
 .PHONY: web-agreement
 web-agreement: PACKAGES += catch2 bubblewrap
 web-agreement: build grade-deps web
 	cd $(BUILD) && ctest --output-on-failure -R '^grade: (write the test submissions|part [123] batch with --jobs 2)$$'
+	python3 grader/tests/sweep.py $(BIN)/t10-grade $(CURDIR) $(OUT)/grade-sweep $(GRADE_JOBS)
 	PYTHONPATH=$(CURDIR)/tools python3 tests/web/agreement.py --web $(OUT)/web --source $(CURDIR) --all \
-	    --submissions $(BUILD)/grader/test-out/submissions --reports $(BUILD)/grader/test-out/reports --out $(OUT)/web-agreement
+	    --submissions $(BUILD)/grader/test-out/submissions --reports $(BUILD)/grader/test-out/reports \
+	    --sweep $(OUT)/grade-sweep --renderer $(WEB_RENDERER) --out $(OUT)/web-agreement
 
 # make grade-jobs-check: the proof that a grader other than root keeps its jobs apart (issue 38): a fork
 # bomb graded beside honest copies with --jobs 2, twenty rounds (grader/tests/isolation/fork_bomb_jobs.py;

@@ -99,6 +99,11 @@ std::uint8_t storeUnorm8(double v) { return static_cast<std::uint8_t>(std::lroun
 double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode) {
     if (mode == FloatStore::Exact) return v;
     if (!(v > 0.0)) return 0.0; // negative values and NaN have no unsigned-float encoding
+    if (mode == FloatStore::HalfThenTruncate) {
+        constexpr int kHalfMantissa = 10; // a half float's exponent range is the target's: one rule serves both
+        return storeUnsignedFloat(storeUnsignedFloat(v, kHalfMantissa, FloatStore::RoundToNearest), mantissaBits,
+                                  FloatStore::Truncate);
+    }
     constexpr int kMinExponent = -14; // exponent bias 15: below 2^-14 the format is denormal
     const double largest = (2.0 - std::ldexp(1.0, -mantissaBits)) * std::ldexp(1.0, 15);
     if (v >= largest) return largest;

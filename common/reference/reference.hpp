@@ -74,7 +74,11 @@ double unorm8Level(double v);
 
 // How a float is stored in GL_R11F_G11F_B10F: unsigned floats with 5 exponent bits and 6 (red,
 // green) or 5 (blue) mantissa bits. GL leaves the rounding to the implementation; Mesa truncates.
-enum class FloatStore { Exact, Truncate, RoundToNearest };
+// SwiftShader (Chromium's WebGL without a GPU) converts through a half float: the value is rounded to
+// 10 mantissa bits (to nearest), then truncated to 6 or 5, so a value within 1/32 of a step of the next
+// one (1/64 in blue) is stored one step higher than truncation stores it (measured on Chromium 120's
+// blur passes: every texel that differs from truncation does so, by one step, and no other).
+enum class FloatStore { Exact, Truncate, RoundToNearest, HalfThenTruncate };
 double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode);
 // Applies storeUnsignedFloat to every texel with the R11G11B10F mantissa widths.
 void storeR11G11B10F(ImageF& image, FloatStore mode);

@@ -69,6 +69,37 @@ ImageF modelPass(const ImageF& source, int w, int h, bool horizontal, const ref:
     return out;
 }
 
+ref::FloatStore passStore(const ImageF& source, const ImageF& firstPass, int w, int h, ref::FloatStore detected) {
+    if (detected != ref::FloatStore::Truncate || firstPass.width != w || firstPass.height != h) return detected;
+    // Texels that are not black and that a rule reproduces exactly; a wrong blur is reproduced by neither.
+    std::size_t lit = 0;
+    const auto matches = [&](ref::FloatStore store) {
+        const ImageF model = modelPass(source, w, h, true, ref::Settings{}, store);
+        std::size_t same = 0;
+        lit = 0;
+        for (std::size_t i = 0; i < model.data.size() && i < firstPass.data.size(); ++i) {
+            if (firstPass.data[i] == 0.0f) continue;
+            ++lit;
+            same += model.data[i] == firstPass.data[i];
+        }
+        return same;
+    };
+    const std::size_t half = matches(ref::FloatStore::HalfThenTruncate);
+    const std::size_t truncated = matches(ref::FloatStore::Truncate);
+    return half > truncated && 2 * half > lit ? ref::FloatStore::HalfThenTruncate : detected;
+}
+
+PeakError chainError(const ImageF& level1, const ImageF& level0, int passes, ref::FloatStore store, const ref::Settings& s) {
+    PeakError best = peakError(level1, ref::gaussianBloom(level0, passes, store, s));
+    if (store == ref::FloatStore::Truncate || store == ref::FloatStore::HalfThenTruncate) {
+        const ref::FloatStore other =
+            store == ref::FloatStore::Truncate ? ref::FloatStore::HalfThenTruncate : ref::FloatStore::Truncate;
+        const PeakError e = peakError(level1, ref::gaussianBloom(level0, passes, other, s));
+        if (e.mean < best.mean) best = e;
+    }
+    return best;
+}
+
 std::vector<BlurFinding> fitPass(const ImageF& source, const ImageF& gpu, int w, int h, bool horizontal,
                                  ref::FloatStore store) {
     std::vector<BlurFinding> found;

@@ -57,6 +57,19 @@ bool blurWithin(const PeakError& e);
 // One Gaussian pass with a model's settings, stored as the GPU's R11G11B10F target stores it.
 ImageF modelPass(const ImageF& source, int w, int h, bool horizontal, const ref::Settings& s, ref::FloatStore store);
 
+// The blur target's store rule: `detected` (ref::detectFloatStore on bloom level 0), or, when that is
+// Truncate, HalfThenTruncate if it reproduces more of the first pass's texels exactly (`source` is what
+// the pass read) and more than half of those that are not black. Level 0 cannot tell the two apart: the
+// threshold writes it from the half-float accumulation, whose values a half float's rounding leaves alone.
+ref::FloatStore passStore(const ImageF& source, const ImageF& firstPass, int w, int h, ref::FloatStore detected);
+
+// `level1` against `passes` CPU pairs of passes from `level0` with `s`, stored by `store`, or by the other
+// of Truncate and HalfThenTruncate when that explains it better: a blur with a wrong constant matches
+// neither rule in its first pass (passStore keeps truncation), yet its chain is judged with the rule the
+// driver used. The two rules differ by 2e-4 of the peak on average over ten passes; a wrong blur by tens
+// of percent.
+PeakError chainError(const ImageF& level1, const ImageF& level0, int passes, ref::FloatStore store, const ref::Settings& s);
+
 // The blur's one-constant mistakes, fitted to a pass (fitPass) and made to agree across the cases
 // (crossCheckCases).
 inline const ModelParameter kBlurParameters[] = {{"blur-sigma", &ref::Settings::sigma, 0.2, 12.0, {27}, 3},

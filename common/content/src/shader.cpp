@@ -67,9 +67,7 @@ GLuint ShaderManager::createProgram(std::initializer_list<std::string> fileNames
     return createProgram(std::vector<std::string>(fileNames));
 }
 
-GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) const {
-    Program program(glCreateProgram());
-    ProgramLayout layout; // what the platform sets after linking (platform_parts.hpp)
+void ShaderManager::build(GLuint program, const std::vector<std::string>& fileNames, ProgramLayout& layout) const {
     std::vector<Shader> shaders;
     std::string names;
     for (const std::string& name : fileNames) {
@@ -82,17 +80,48 @@ GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) c
         GLint ok = GL_FALSE;
         glGetShaderiv(shader.get(), GL_COMPILE_STATUS, &ok);
         if (ok != GL_TRUE) throw Error(file.string() + ": shader compilation failed:\n" + shaderLog(shader.get()));
-        glAttachShader(program.get(), shader.get());
+        glAttachShader(program, shader.get());
         shaders.push_back(std::move(shader));
         names += (names.empty() ? "" : " + ") + file.string();
     }
-    glLinkProgram(program.get());
+    glLinkProgram(program);
+    for (const Shader& shader : shaders) glDetachShader(program, shader.get());
     GLint ok = GL_FALSE;
-    glGetProgramiv(program.get(), GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) throw Error(names + ": program link failed:\n" + programLog(program.get()));
-    for (const Shader& shader : shaders) glDetachShader(program.get(), shader.get());
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) throw Error(names + ": program link failed:\n" + programLog(program));
+}
+
+GLuint ShaderManager::createProgram(const std::vector<std::string>& fileNames) const {
+    Program program(glCreateProgram());
+    ProgramLayout layout; // what the platform sets after linking (platform_parts.hpp)
+    build(program.get(), fileNames, layout);
     applyLayout(program.get(), layout);
+    // A name GL hands out again replaces the deleted program's entry.
+    made_.erase(std::remove_if(made_.begin(), made_.end(),
+                               [&](const Made& m) { return m.program == program.get() || glIsProgram(m.program) != GL_TRUE; }),
+                made_.end());
+    made_.push_back({program.get(), fileNames});
     return program.release();
+}
+
+std::vector<ShaderManager::Made> ShaderManager::made() const {
+    std::vector<Made> alive;
+    for (const Made& m : made_)
+        if (glIsProgram(m.program) == GL_TRUE) alive.push_back(m);
+    return alive;
+}
+
+void ShaderManager::relink(GLuint program) const {
+    const auto entry = std::find_if(made_.begin(), made_.end(), [&](const Made& m) { return m.program == program; });
+    if (entry == made_.end()) throw Error("program " + std::to_string(program) + " was not made by this shader manager");
+    {
+        Program trial(glCreateProgram());
+        ProgramLayout unused;
+        build(trial.get(), entry->files, unused); // throws, leaving `program` alone
+    }
+    ProgramLayout layout;
+    build(program, entry->files, layout);
+    applyLayout(program, layout);
 }
 
 } // namespace t10

@@ -240,6 +240,15 @@ void configureProgram(unsigned program, const ProgramLayout& layout) {
         map.subroutineLocations.push_back(glGetUniformLocation(program, subroutine.uniformName.c_str()));
         map.subroutineValues.push_back(0);
     }
+    // Linked again (the page's shader editing): the locations handed out before keep their numbers.
+    if (const auto old = programs().find(program); old != programs().end()) {
+        map.next = old->second.next;
+        for (const auto& [name, ours] : old->second.lookedUp) {
+            map.lookedUp[name] = ours;
+            const GLint location = glGetUniformLocation(program, name.c_str());
+            if (location >= 0) map.locations[ours] = location;
+        }
+    }
     glUseProgram(static_cast<GLuint>(previous));
     programs()[program] = std::move(map);
 }

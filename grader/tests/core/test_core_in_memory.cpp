@@ -6,6 +6,7 @@
 // not be read fails the case only when a check reads it. Shown to fail with 0.55 expected (0.5000043
 // measured) and with the unreadable level the key's (level 4), which every case reads.
 #include "checks/checks.hpp"
+#include "diagnosis/bloom_model.hpp"
 #include "diagnosis/frame_model.hpp"
 #include "part/part.hpp"
 
@@ -152,4 +153,51 @@ TEST_CASE("a level that could not be read fails the case only when a check reads
     missing.buffers.units.clear();
     CHECK_THROWS_WITH(bufferChecks(1, missing, images),
                       "in memory/unit16_level0.pfm: not written by the stage (is the texture bound to unit 16?)");
+}
+
+namespace {
+
+// A bloom level 0 with lit texels of every size over four decades and black ones between them.
+ImageF bloomLevel0(int side) {
+    ImageF image(side, side, 3);
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const double v = (x * 7 + y * 3) % 5 == 0 ? 0.0 : 0.01 * std::pow(10.0, 4.0 * ((x * 13 + y * 29) % 97) / 96.0);
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = float(v * (1.0 + 0.1 * c));
+        }
+    return image;
+}
+
+} // namespace
+
+// SwiftShader's R11G11B10F store (a half float rounded to nearest, then truncated) is read off the
+// first blur pass; a truncating driver's pass and a wrong blur keep truncation. Fails if passStore
+// answers Truncate for the half-float pass (as it did before: the reference's blur then missed SwiftShader's
+// bound, 1.8e-4 of the peak against 1e-4), or HalfThenTruncate for either of the others.
+TEST_CASE("the blur target's store rule is read off its first pass, and the chain judged with it") {
+    CHECK(ref::storeUnsignedFloat(2.0 - 1e-4, 6, ref::FloatStore::HalfThenTruncate) == 2.0);
+    CHECK(ref::storeUnsignedFloat(2.0 - 1e-4, 6, ref::FloatStore::Truncate) == 2.0 - 1.0 / 64.0);
+    CHECK(ref::storeUnsignedFloat(2.0 - 1.0 / 128.0, 6, ref::FloatStore::HalfThenTruncate) == 2.0 - 1.0 / 64.0);
+    const ImageF level0 = bloomLevel0(128);
+    const int half = 64;
+    const auto pass = [&](ref::FloatStore store, double sigma) {
+        ref::Settings s;
+        s.sigma = sigma;
+        return modelPass(level0, half, half, true, s, store);
+    };
+    const ref::FloatStore truncate = ref::FloatStore::Truncate;
+    CHECK(passStore(level0, pass(ref::FloatStore::HalfThenTruncate, 2.5), half, half, truncate) == ref::FloatStore::HalfThenTruncate);
+    CHECK(passStore(level0, pass(truncate, 2.5), half, half, truncate) == truncate);
+    CHECK(passStore(level0, pass(ref::FloatStore::HalfThenTruncate, 3.0), half, half, truncate) == truncate);
+    CHECK(passStore(level0, pass(ref::FloatStore::HalfThenTruncate, 2.5), half, half, ref::FloatStore::RoundToNearest) ==
+          ref::FloatStore::RoundToNearest);
+    // The chain: SwiftShader's level 1 is judged with its rule even when the first pass did not say it
+    // (a wrong blur's); a wrong sigma is still far outside the tolerance under either rule.
+    const ImageF swiftShader = ref::gaussianBloom(level0, ref::kBlurPasses, ref::FloatStore::HalfThenTruncate);
+    CHECK(chainError(swiftShader, level0, ref::kBlurPasses, truncate, ref::Settings{}).mean == 0.0);
+    CHECK(peakError(swiftShader, ref::gaussianBloom(level0, ref::kBlurPasses, truncate)).mean > 0.0);
+    ref::Settings wide;
+    wide.sigma = 3.0;
+    const ImageF wrong = ref::gaussianBloom(level0, ref::kBlurPasses, ref::FloatStore::HalfThenTruncate, wide);
+    CHECK_FALSE(blurWithin(chainError(wrong, level0, ref::kBlurPasses, truncate, ref::Settings{})));
 }
