@@ -1,6 +1,7 @@
 // TexelReadback, the non-blocking read of one texel (extras' scene key): the value arrives once
 // the GPU has made the copy, it is the value of the newest finished request, it never disturbs
-// the pixel-pack binding that synchronous reads rely on, and a level that is not 1x1 is refused.
+// the pixel-pack binding that synchronous reads rely on, and a level that is not 1x1 is refused; and the
+// two queries the views and checks share (what a texture unit and a colour attachment hold).
 #include "gl_context.hpp"
 
 #include "t10/context.hpp"
@@ -58,6 +59,51 @@ TEST_CASE("TexelReadback returns the newest finished copy without disturbing oth
     readback.destroy();
     glDeleteTextures(1, &first);
     glDeleteTextures(1, &second);
+    log.pollGetError();
+    CHECK(log.describe() == "");
+}
+
+TEST_CASE("textureOnUnit and attachedLevel say what a unit and an attachment hold", "[readback]") {
+    const std::unique_ptr<t10::Context> context = t10::test::makeTestContext();
+    t10::GlErrorLog log;
+    log.installDebugCallback();
+
+    const GLuint key = keyTexture(1.0f);
+    glActiveTexture(GL_TEXTURE0 + 5);
+    glBindTexture(GL_TEXTURE_2D, key);
+    glActiveTexture(GL_TEXTURE0 + 2);
+    const t10::BoundTexture bound = t10::textureOnUnit(5);
+    CHECK(bound.texture == key);
+    CHECK(bound.format == GL_R16F);
+    CHECK(bound.levels == 2);
+    GLint active = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    CHECK(active == GL_TEXTURE0 + 2); // put back
+    CHECK(t10::textureOnUnit(6).texture == 0);
+
+    // Level 1 of the key texture on attachment 1, a renderbuffer on attachment 0.
+    GLuint framebuffer = 0;
+    GLuint renderbuffer = 0;
+    glGenFramebuffers(1, &framebuffer);
+    glGenRenderbuffers(1, &renderbuffer);
+    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 2, 2);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
+    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffer);
+    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, key, 1);
+    const t10::AttachedLevel attached = t10::attachedLevel(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1);
+    CHECK(attached.texture == key);
+    CHECK(attached.level == 1);
+    CHECK(attached.face == 0);
+    CHECK(t10::attachedLevel(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0).texture == 0); // a renderbuffer
+    CHECK(t10::attachedLevel(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT2).texture == 0); // nothing
+
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteRenderbuffers(1, &renderbuffer);
+    glActiveTexture(GL_TEXTURE0 + 5);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glDeleteTextures(1, &key);
     log.pollGetError();
     CHECK(log.describe() == "");
 }

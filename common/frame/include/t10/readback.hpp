@@ -15,6 +15,24 @@ Image8 readDefaultFramebuffer(int width, int height);
 // Reads one level of a 2D texture as float with 1 or 3 channels (or 4 with rgba = true).
 ImageF readTextureLevel(GLuint texture, int level, bool rgba = false);
 
+// The 2D texture bound on a texture unit (texture 0 for none), its level 0's internal format and its
+// immutable level count (0 for a mutable texture); the active unit is put back.
+struct BoundTexture {
+    GLuint texture = 0;
+    GLint format = 0;
+    GLint levels = 0;
+};
+BoundTexture textureOnUnit(GLuint unit);
+
+// The texture level a colour attachment of the framebuffer bound to `target` renders into (texture 0
+// when the attachment is empty or a renderbuffer).
+struct AttachedLevel {
+    GLuint texture = 0;
+    GLint level = 0;
+    GLint face = 0;
+};
+AttachedLevel attachedLevel(GLenum target, GLenum attachment);
+
 // The red channel of a 1x1 texture level (t10::Error for any other size), copied into a pixel buffer with a fence
 // after each request() and read by poll() once the GPU has got there: the value is a few frames
 // old, and no frame waits for it. GL objects are made on the first request(); destroy() deletes

@@ -40,28 +40,20 @@ public:
         GLint subroutineUniforms = 0;
         glGetProgramStageiv(GLuint(program), GL_FRAGMENT_SHADER, GL_ACTIVE_SUBROUTINE_UNIFORMS, &subroutineUniforms);
         if (subroutineUniforms == 0) return;
-        GLint type = GL_NONE;
-        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-        if (type != GL_TEXTURE) return;
-        GLint texture = 0;
-        GLint level = 0;
-        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                                              GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &texture);
-        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                                              GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &level);
+        const AttachedLevel target = attachedLevel(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0);
+        if (target.texture == 0) return;
         // The subroutine the pass ran with: its name says which axis the student meant.
         GLuint index = 0;
         glGetUniformSubroutineuiv(GL_FRAGMENT_SHADER, 0, &index);
         char name[128] = "unknown";
         glGetActiveSubroutineName(GLuint(program), GL_FRAGMENT_SHADER, index, sizeof(name), nullptr, name);
-        const ImageF image = readTextureLevel(GLuint(texture), level);
+        const ImageF image = readTextureLevel(target.texture, target.level);
         ++pass_;
         char file[32];
         std::snprintf(file, sizeof(file), "blur_pass%02d.pfm", pass_);
         writePfm((std::filesystem::path(dir_) / file).string(), image);
-        list_ << pass_ << " " << name << " " << texture << " " << level << " " << image.width << "x" << image.height
-              << "\n";
+        list_ << pass_ << " " << name << " " << target.texture << " " << target.level << " " << image.width << "x"
+              << image.height << "\n";
     }
 
     void endRender() override {

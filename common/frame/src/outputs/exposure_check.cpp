@@ -14,19 +14,12 @@
 namespace t10 {
 
 std::optional<BlackShare> measureBlackShare() {
-    GLint active = 0;
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-    glActiveTexture(GL_TEXTURE0 + contract::kLuminanceKeyUnit);
-    GLint texture = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
-    GLint format = 0;
-    if (texture != 0) glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
-    glActiveTexture(static_cast<GLenum>(active));
-    if (texture == 0) return std::nullopt;
-    const ImageF level = readTextureLevel(static_cast<GLuint>(texture), 0);
+    const BoundTexture key = textureOnUnit(contract::kLuminanceKeyUnit);
+    if (key.texture == 0) return std::nullopt;
+    const ImageF level = readTextureLevel(key.texture, 0);
     if (level.data.empty()) return std::nullopt;
     // Each texel back to ln(Y + epsilon): GL_R16 holds the range mapping of steps 5 and 9.
-    const bool rangeMapped = format != GL_R16F;
+    const bool rangeMapped = key.format != GL_R16F;
     double sumAll = 0.0;
     double sumLit = 0.0;
     std::size_t black = 0;

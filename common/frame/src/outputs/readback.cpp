@@ -26,6 +26,37 @@ Image8 readDefaultFramebuffer(int width, int height) {
     return image;
 }
 
+BoundTexture textureOnUnit(GLuint unit) {
+    GLint active = 0;
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+    glActiveTexture(GL_TEXTURE0 + unit);
+    GLint texture = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
+    BoundTexture bound;
+    bound.texture = static_cast<GLuint>(texture);
+    if (texture != 0) {
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &bound.format);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_LEVELS, &bound.levels);
+    }
+    glActiveTexture(static_cast<GLenum>(active));
+    return bound;
+}
+
+AttachedLevel attachedLevel(GLenum target, GLenum attachment) {
+    AttachedLevel attached;
+    GLint type = GL_NONE;
+    glGetFramebufferAttachmentParameteriv(target, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_TEXTURE) return attached;
+    GLint texture = 0;
+    glGetFramebufferAttachmentParameteriv(target, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &texture);
+    glGetFramebufferAttachmentParameteriv(target, attachment, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL,
+                                          &attached.level);
+    glGetFramebufferAttachmentParameteriv(target, attachment, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE,
+                                          &attached.face);
+    attached.texture = static_cast<GLuint>(texture);
+    return attached;
+}
+
 ImageF readTextureLevel(GLuint texture, int level, bool rgba) {
     const TextureOnUnit0 bound(texture);
     GLint width = 0;

@@ -40,15 +40,6 @@ ViewTarget levelOf(GLenum unit, GLuint texture, int level) {
     return target;
 }
 
-GLuint boundTexture(GLenum unit, GLint& levels) {
-    glActiveTexture(GL_TEXTURE0 + unit);
-    GLint texture = 0;
-    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture);
-    levels = 0;
-    if (texture != 0) glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
-    return static_cast<GLuint>(texture);
-}
-
 // The half-resolution intermediate of the blur: a level-0 colour attachment of some framebuffer
 // with the bloom's format and the size of bloom level 1, other than the bloom texture itself.
 ViewTarget findBlurTarget(const ViewTarget& bloom1, GLuint bloomTexture) {
@@ -67,23 +58,12 @@ ViewTarget findBlurTarget(const ViewTarget& bloom1, GLuint bloomTexture) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, name);
         for (GLint i = 0; i < std::min(maxAttachments, 8); ++i) {
             const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
-            GLint type = GL_NONE;
-            glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
-                                                  GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
-            if (type != GL_TEXTURE) continue;
-            GLint texture = 0;
-            GLint level = 0;
-            GLint face = 0;
-            glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
-                                                  GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &texture);
-            glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
-                                                  GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &level);
-            glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, attachment,
-                                                  GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_CUBE_MAP_FACE, &face);
-            if (level != 0 || face != 0 || static_cast<GLuint>(texture) == bloomTexture) continue;
+            const AttachedLevel attached = attachedLevel(GL_READ_FRAMEBUFFER, attachment);
+            if (attached.texture == 0 || attached.level != 0 || attached.face != 0 || attached.texture == bloomTexture)
+                continue;
             glActiveTexture(GL_TEXTURE0 + views::kQueryUnit);
-            glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
-            ViewTarget candidate = levelOf(views::kQueryUnit, static_cast<GLuint>(texture), 0);
+            glBindTexture(GL_TEXTURE_2D, attached.texture);
+            ViewTarget candidate = levelOf(views::kQueryUnit, attached.texture, 0);
             glBindTexture(GL_TEXTURE_2D, 0);
             if (candidate.format == bloom1.format && candidate.width == bloom1.width &&
                 candidate.height == bloom1.height) {
@@ -102,13 +82,12 @@ ChainTargets discoverChain(int width, int height) {
     ChainTargets chain;
     GLint active = 0;
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
-    GLint levels = 0;
-    GLuint texture = boundTexture(kAccumulationUnit, levels);
-    chain.accumulation = levelOf(kAccumulationUnit, texture, 0);
-    texture = boundTexture(kLuminanceUnit, levels);
-    chain.luminance = levelOf(kLuminanceUnit, texture, 0);
-    chain.luminanceSmallest = levelOf(kLuminanceUnit, texture, std::max(levels - 1, 0));
-    const GLuint bloom = boundTexture(kBloomUnit, levels);
+    const BoundTexture accumulation = textureOnUnit(kAccumulationUnit);
+    chain.accumulation = levelOf(kAccumulationUnit, accumulation.texture, 0);
+    const BoundTexture luminance = textureOnUnit(kLuminanceUnit);
+    chain.luminance = levelOf(kLuminanceUnit, luminance.texture, 0);
+    chain.luminanceSmallest = levelOf(kLuminanceUnit, luminance.texture, std::max(luminance.levels - 1, 0));
+    const GLuint bloom = textureOnUnit(kBloomUnit).texture;
     chain.bloom0 = levelOf(kBloomUnit, bloom, 0);
     chain.bloom1 = levelOf(kBloomUnit, bloom, 1);
     chain.blur = findBlurTarget(chain.bloom1, bloom);
