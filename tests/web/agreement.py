@@ -63,7 +63,7 @@ KNOWN[(3, "sweep10_blur_tap_inner_7", "swiftshader")] = (
     "an inner tap of 2.5: the page's pot.blur names blur-tap-inner too, t10-grade's (llvmpipe) only npot.blur's")
 KNOWN[(3, "sweep11_blur_tap_outer_4", "swiftshader")] = (
     "an outer tap of 1.6: t10-grade's npot.blur names blur-tap-outer too, the page's only pot.blur's")
-# make grade-sweep's Parts 1 and 2, measured at f517587 (llvmpipe 84 of 88 agree, SwiftShader 82 of 88).
+# make grade-sweep's Parts 1 and 2, measured at 3d5ffcd (llvmpipe 86 of 88 agree, SwiftShader 84 of 88).
 # The thresholds are the batch's threshold again: the one luminance interval every case allows, which
 # t10-grade's EXR cases pin and the page's pot and npot do not.
 THRESHOLD_INTERVAL = ("the bloom threshold's value is the one luminance interval every case allows: t10-grade's "
