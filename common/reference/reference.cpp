@@ -86,15 +86,17 @@ std::uint8_t toUnorm8(double v) {
     return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
 }
 
-double unorm8Level(double v) {
+double unorm8Level(double v, Unorm8Store store) {
     // Measured on Mesa 22.3: a Part 1 whose key is 1e-6 writes 0 for all 1186 channels at or
     // past 2^31 / 255 of its extremes case and 255 for the 8030 between 1 and that. Debian 13's Mesa
     // stores the same (the fitted batch's white point 0.03 is named there).
-    if (!(v < kUnorm8Overflow)) return 0.0;
+    if (std::isnan(v) || (store == Unorm8Store::Llvmpipe && v >= kUnorm8Overflow)) return 0.0;
     return std::clamp(v, 0.0, 1.0) * 255.0;
 }
 
-std::uint8_t storeUnorm8(double v) { return static_cast<std::uint8_t>(std::lround(unorm8Level(v))); }
+std::uint8_t storeUnorm8(double v, Unorm8Store store) {
+    return static_cast<std::uint8_t>(std::lround(unorm8Level(v, store)));
+}
 
 double storeUnsignedFloat(double v, int mantissaBits, FloatStore mode) {
     if (mode == FloatStore::Exact) return v;
@@ -260,8 +262,9 @@ double keyFromMapped(double mapped, const Settings& settings, Unmap unmap) {
     return keyFromMapped(mapped, settings);
 }
 
-FrameInputs::FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel, const std::vector<ImageF>* luminanceLevels)
-    : accumulation(acc), mappedKey(key), bloom(bloomLevel), levels(luminanceLevels) {
+FrameInputs::FrameInputs(const ImageF& acc, double key, const ImageF* bloomLevel, const std::vector<ImageF>* luminanceLevels,
+                         Unorm8Store frameStore)
+    : accumulation(acc), mappedKey(key), bloom(bloomLevel), levels(luminanceLevels), store(frameStore) {
     if (bloom == nullptr) return;
     bloomAt.reserve(std::size_t(acc.width) * acc.height);
     for (int y = 0; y < acc.height; ++y)
@@ -315,11 +318,11 @@ std::vector<Rgb> colours(const FrameInputs& in, const FrameVariant& variant, dou
     return out;
 }
 
-Image8 toImage8(const std::vector<Rgb>& colours, int width, int height) {
+Image8 toImage8(const std::vector<Rgb>& colours, int width, int height, Unorm8Store store) {
     Image8 frame(width, height, 3);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = storeUnorm8(colours[std::size_t(y) * width + x][k]);
+            for (int k = 0; k < 3; ++k) frame.at(x, y, k) = storeUnorm8(colours[std::size_t(y) * width + x][k], store);
     return frame;
 }
 
@@ -334,14 +337,14 @@ void frameColours(const FrameInputs& inputs, const FrameVariant& variant, std::v
 }
 
 Image8 finalFrame(const FrameInputs& inputs, const FrameVariant& variant) {
-    return toImage8(frameColours(inputs, variant), inputs.accumulation.width, inputs.accumulation.height);
+    return toImage8(frameColours(inputs, variant), inputs.accumulation.width, inputs.accumulation.height, inputs.store);
 }
 
 Image8 finalFrame(const ImageF& accumulation, double sceneKey, const ImageF* bloomLevel, const Settings& settings) {
     FrameVariant variant;
     variant.settings = settings;
     const FrameInputs inputs(accumulation, 0.0, bloomLevel);
-    return toImage8(colours(inputs, variant, sceneKey), accumulation.width, accumulation.height);
+    return toImage8(colours(inputs, variant, sceneKey), accumulation.width, accumulation.height, inputs.store);
 }
 
 } // namespace t10::ref

@@ -64,13 +64,18 @@ Rgb toneMap(const Rgb& colour, double sceneKey, const Settings& settings = {});
 double toneMapLuminance(double y, double sceneKey, const Settings& settings = {});
 // How GL converts a float to an 8-bit normalised channel: clamp, scale, round to nearest.
 std::uint8_t toUnorm8(double v);
-// How llvmpipe, which renders every frame this project compares, stores a float in the 8-bit frame:
-// it scales before it clamps, through a 32-bit integer, so a channel at or past 2^31 / 255 (8.4e6,
-// which a tone map can reach when its key is tiny) and NaN store 0; below that it is toUnorm8.
-std::uint8_t storeUnorm8(double v);
+// How the renderer that drew a frame stores a float in its 8-bit channels. Llvmpipe (natively, as
+// t10-grade and every golden render it): it scales before it clamps, through a 32-bit integer, so a
+// channel at or past 2^31 / 255 (8.4e6, which a tone map can reach when its key is tiny) stores 0.
+// Clamped: clamp, then scale, as GL ES 3.0 specifies; what the browsers' WebGL 2 stores, on Mesa
+// llvmpipe as on SwiftShader (measured: a Part 1 with epsilon 5e-2 in step 4, whose key is 3.7e-6,
+// writes 255 in the page for the 51 pixels of its 128x128 frame that llvmpipe writes 0). NaN stores 0
+// in both. Below the overflow both are toUnorm8.
+enum class Unorm8Store { Llvmpipe, Clamped };
+std::uint8_t storeUnorm8(double v, Unorm8Store store = Unorm8Store::Llvmpipe);
 inline constexpr double kUnorm8Overflow = 2147483648.0 / 255.0;
 // The level storeUnorm8 rounds, in [0, 255]: what a fit's residual compares without the rounding.
-double unorm8Level(double v);
+double unorm8Level(double v, Unorm8Store store = Unorm8Store::Llvmpipe);
 
 // How a float is stored in GL_R11F_G11F_B10F: unsigned floats with 5 exponent bits and 6 (red,
 // green) or 5 (blue) mantissa bits. GL leaves the rounding to the implementation; Mesa truncates.
@@ -138,14 +143,16 @@ struct FrameVariant {
 // What the final pass reads: the accumulation, the stored (range-mapped) key of the smallest
 // luminance level, bloom level 1 (null without bloom) and, for a variant with a key level, the
 // luminance levels. Bloom level 1 at each pixel's centre is sampled once here: a fit evaluates the
-// frame hundreds of times. The images must outlive the inputs.
+// frame hundreds of times. The images must outlive the inputs. `store` is how the renderer whose
+// frame is compared stores 8 bits.
 struct FrameInputs {
     explicit FrameInputs(const ImageF& accumulation, double mappedKey, const ImageF* bloomLevel = nullptr,
-                const std::vector<ImageF>* luminanceLevels = nullptr);
+                const std::vector<ImageF>* luminanceLevels = nullptr, Unorm8Store frameStore = Unorm8Store::Llvmpipe);
     const ImageF& accumulation;
     double mappedKey;
     const ImageF* bloom;
     const std::vector<ImageF>* levels;
+    Unorm8Store store;
     std::vector<Rgb> bloomAt;
 };
 

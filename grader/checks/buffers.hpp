@@ -5,6 +5,7 @@
 #pragma once
 #include "t10/contract.hpp"
 #include "t10/image.hpp"
+#include "reference.hpp"
 
 #include <exception>
 #include <map>
@@ -36,6 +37,9 @@ struct CaseBuffers {
     std::string name;                               // names the buffers in errors (the dump folder)
     ImageF accumulation;                            // the accumulation unit (15), level 0 (RGB)
     Image8 frame;                                   // the final frame
+    // How the renderer that drew the frame stores 8 bits: llvmpipe's for t10-grade's renders; the
+    // page's check (grader/page/) renders through WebGL 2, which clamps (reference.hpp).
+    t10::ref::Unorm8Store frameStore = t10::ref::Unorm8Store::Llvmpipe;
     std::map<int, std::vector<BufferLevel>> units;  // every level written of each other unit (16, 17)
     bool captured = false;                          // whether the passes were recorded at all
     std::vector<CapturedPass> passes;

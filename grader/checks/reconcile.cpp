@@ -20,7 +20,8 @@ namespace {
 struct CaseFrame {
     CaseFrame(int part, const CaseRun& caseRun) : run(caseRun) {
         if (part >= 2) bloom1 = run.buffers.bloom(1);
-        inputs = std::make_unique<FrameInputs>(run.buffers.accumulation, gpuMappedKey(run.buffers), part >= 2 ? &bloom1 : nullptr, nullptr);
+        inputs = std::make_unique<FrameInputs>(run.buffers.accumulation, gpuMappedKey(run.buffers), part >= 2 ? &bloom1 : nullptr,
+                                               nullptr, run.buffers.frameStore);
     }
     const CaseRun& run;
     ImageF bloom1;

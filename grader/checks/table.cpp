@@ -403,7 +403,7 @@ bool blurCheck(CaseState& state, const CheckSpec& spec, Check& check) {
 void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
     std::vector<ImageF> levels;
     for (int l = 0; l < state.buffers.luminanceLevels(); ++l) levels.push_back(state.buffers.level(kLuminanceUnit, l));
-    const FrameInputs withLevels{state.acc, state.gpuKey, bloom, &levels};
+    const FrameInputs withLevels{state.acc, state.gpuKey, bloom, &levels, state.buffers.frameStore};
     const auto frameError = [&](const FrameModel& m) { return t10::test::byteError(ref::finalFrame(withLevels, m), state.buffers.frame); };
     std::vector<ref::Rgb> scratch;
     for (const DiscreteModel& d : frameDiscreteModels(state.part, int(levels.size())))
@@ -427,7 +427,7 @@ void nameFrameMistakes(CaseState& state, const ImageF* bloom, Check& check) {
 // step away only next to a rounding boundary, so at most 1 step and rarely.
 bool frameCheck(CaseState& state, const CheckSpec& spec, Check& check) {
     const ImageF* bloom = state.part >= 2 ? &state.bloom1 : nullptr;
-    const FrameInputs inputs{state.acc, state.gpuKey, bloom, nullptr};
+    const FrameInputs inputs{state.acc, state.gpuKey, bloom, nullptr, state.buffers.frameStore};
     const Image8 expected = ref::finalFrame(inputs, FrameModel{});
     const auto error = t10::test::byteError(expected, state.buffers.frame);
     check.passed = frameWithin(error);

@@ -59,8 +59,8 @@ double frameResidual(const FrameInputs& in, const FrameModel& model, const Image
     for (int y = 0; y < in.accumulation.height; y += step)
         for (int x = 0; x < w; x += step, ++count)
             for (int k = 0; k < 3; ++k) {
-                // The level llvmpipe stores, unrounded, so that the residual varies smoothly with the value.
-                sum += std::abs(ref::unorm8Level(colours[std::size_t(y) * w + x][k]) - frame.at(x, y, k));
+                // The level the renderer stores, unrounded, so that the residual varies smoothly with the value.
+                sum += std::abs(ref::unorm8Level(colours[std::size_t(y) * w + x][k], in.store) - frame.at(x, y, k));
             }
     return sum / (3.0 * double(count));
 }

@@ -191,6 +191,11 @@ TEST_CASE("the 8-bit frame store is GL's below llvmpipe's integer overflow, and 
     // The unrounded level the fits compare: the same rule.
     CHECK(ref::unorm8Level(0.5) == 127.5);
     CHECK(ref::unorm8Level(ref::kUnorm8Overflow) == 0.0);
+    // WebGL 2 (the page's check) clamps first: 255 from there on, NaN still 0.
+    for (const double v : {ref::kUnorm8Overflow, 1e30, std::numeric_limits<double>::infinity()})
+        CHECK(ref::storeUnorm8(v, ref::Unorm8Store::Clamped) == 255);
+    CHECK(ref::storeUnorm8(std::nan(""), ref::Unorm8Store::Clamped) == 0);
+    CHECK(ref::unorm8Level(0.5, ref::Unorm8Store::Clamped) == 127.5);
     // finalFrame stores that way: a tiny key takes a bright channel past it.
     t10::ImageF acc(1, 1, 3);
     acc.at(0, 0, 0) = 8.6f;

@@ -201,3 +201,47 @@ TEST_CASE("the blur target's store rule is read off its first pass, and the chai
     const ImageF wrong = ref::gaussianBloom(level0, ref::kBlurPasses, ref::FloatStore::HalfThenTruncate, wide);
     CHECK_FALSE(blurWithin(chainError(wrong, level0, ref::kBlurPasses, truncate, ref::Settings{})));
 }
+
+// WebGL 2 clamps a channel before its 8-bit store; native llvmpipe stores 0 from 2^31 / 255 on
+// (reference.hpp). A mapped key of 0.05 (Ya 2.3e-8) takes the bright channels past that: the frame
+// passes its check only when the buffers name the store that drew it. Fails as the page's check did
+// before its buffers said Clamped (issue 52: an epsilon of 5e-2 failed pot.frame by 255 steps in the page).
+TEST_CASE("the frame check models the 8-bit store of the renderer that drew the frame") {
+    using Store = ref::Unorm8Store;
+    std::vector<Image8> frames;
+    for (const Store drawn : {Store::Llvmpipe, Store::Clamped}) {
+        for (const Store said : {Store::Llvmpipe, Store::Clamped}) {
+            CaseRun run = part1Case(FrameModel{});
+            run.buffers.units[kLuminanceUnit].back().image.at(0, 0, 0) = 0.05f;
+            run.buffers.frame = ref::finalFrame(
+                FrameInputs{run.buffers.accumulation, gpuMappedKey(run.buffers), nullptr, nullptr, drawn}, FrameModel{});
+            run.buffers.frameStore = said;
+            KeptImages images;
+            const std::vector<Check> checks = bufferChecks(1, run, images);
+            const Check& frame = find(checks, "pot.frame");
+            INFO(frame.measured);
+            CHECK(frame.passed == (drawn == said));
+            if (said == drawn) frames.push_back(run.buffers.frame);
+        }
+    }
+    REQUIRE(frames.size() == 2);
+    CHECK(frames[0].data != frames[1].data); // some channel did pass 2^31 / 255
+}
+
+// A basin whose floor lies between two grid points, behind the shoulder of its neighbour's (a Part 1
+// with middle grey 1.06: its frame fit's grid read 38.9 at the negative scale's 0.879, 39.1 at 1.024
+// and missed 1.06): the grid interval beyond the start's bracket is searched when no start reached
+// goodEnough. Fails without that search (the fit ends at 7 with 38.9).
+TEST_CASE("a frame fit finds a narrow basin that its neighbour's minimum hides on the grid") {
+    const auto error = [](double t) {
+        if (t < 7.0) return 38.9 + 20.0 * (7.0 - t);
+        if (t <= 8.0) return 38.9 + 0.2 * (t - 7.0);
+        if (t <= 9.0) return 0.2 + 130.0 * std::abs(t - 8.3);
+        return 91.2 + 10.0 * (t - 9.0);
+    };
+    const Fit fit = fitParameter(error, 0.0, 15.0, false, 16, kRoughFrameFitSteps, kFrameFitStarts, kFrameResidualCeiling);
+    CHECK(fit.value == Approx(8.3).margin(1e-3));
+    CHECK(fit.error < kFrameResidualCeiling);
+    // One start alone searches only its bracket, as before.
+    CHECK(fitParameter(error, 0.0, 15.0, false, 16, kRoughFrameFitSteps, 1, kFrameResidualCeiling).error > 38.0);
+}
