@@ -68,11 +68,12 @@ Fit fitParameter(const std::function<double(double)>& error, double low, double 
     }
     // A narrow basin whose floor lies between two grid points can hide behind the shoulder of its
     // neighbour's: a Part 1 with middle grey 1.06 (scene key 0.03) reads 38.9 steps at the grid's
-    // 0.879 (the negative scale's basin), 39.1 at 1.024 (no local minimum) and 0.24 at 1.06, 2.4 at
-    // 1.058. When no start ends within goodEnough, the grid interval beyond each start's bracket is
-    // searched too; a fit that reached it is left as it was.
-    for (std::size_t k = 0; starts > 1 && best.error > goodEnough && k < minima.size() && static_cast<int>(k) < starts; ++k)
-        for (const int from : {minima[k] + 1, minima[k] - 2}) {
+    // 0.879 (the negative scale's basin, the best start), 39.1 at 1.024 (no local minimum) and 0.24 at
+    // 1.06, 2.4 at 1.058. When no start ends within goodEnough, the grid interval on either side of the
+    // best start's bracket is searched too (only the best's: every start's made each failing frame
+    // check's rough fits nearly three times as long, 14 % more grading CPU on Part 1's batch).
+    if (starts > 1 && best.error > goodEnough && !minima.empty())
+        for (const int from : {minima[0] + 1, minima[0] - 2}) {
             if (from < 0 || from + 1 >= grid) continue;
             const Fit found = goldenSection(error, value, t0 + dt * from, t0 + dt * (from + 1), steps);
             if (found.error < best.error) best = found;

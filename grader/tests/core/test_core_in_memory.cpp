@@ -230,7 +230,7 @@ TEST_CASE("the frame check models the 8-bit store of the renderer that drew the 
 
 // A basin whose floor lies between two grid points, behind the shoulder of its neighbour's (a Part 1
 // with middle grey 1.06: its frame fit's grid read 38.9 at the negative scale's 0.879, 39.1 at 1.024
-// and missed 1.06): the grid interval beyond the start's bracket is searched when no start reached
+// and missed 1.06): the grid interval beyond the best start's bracket is searched when no start reached
 // goodEnough. Fails without that search (the fit ends at 7 with 38.9).
 TEST_CASE("a frame fit finds a narrow basin that its neighbour's minimum hides on the grid") {
     const auto error = [](double t) {
