@@ -41,7 +41,7 @@ Apply does nothing fails step 3 (A unchanged), one that applies the wrong file o
 step 4, one that applies a file that did not compile (or loses the last good program) fails step 5,
 and a page without the editor fails step 1 (no "Edit the shaders" button).
 
---firefox FIREFOX runs steps 1-8 in Firefox ESR instead, on its own Xvfb display (tools/web/marionette.py;
+--firefox FIREFOX runs steps 1-11 but 9's keys in Firefox ESR instead, on its own Xvfb display (tools/web/marionette.py;
 no keys are typed there and axe is Chromium's), screenshots from the display (editor-firefox-*.png):
 make site-live runs it.
 
@@ -214,6 +214,10 @@ class FirefoxRun(Run):
     def js(self, expression, await_promise=False, timeout=60):
         return self.browser.evaluate(expression, timeout)
 
+    def shot_page(self, name):
+        """The top of the page (a stage page: its canvas and status line), as the display shows it."""
+        self.browser.display_screenshot(os.path.join(self.out, f"editor-firefox-{name}.png"), "body")
+
     def shot(self, name):
         """The display shows a window's height: the frame, then the editor's panel from its top."""
         self.browser.display_screenshot(os.path.join(self.out, f"editor-firefox-{name}.png"), f'.live[data-stage="{self.stage}"]')
@@ -237,7 +241,7 @@ def open_editor(run, timeout):
 
 
 def steps(run, args, start_text, started, expect):
-    """Steps 1-9 of the docstring in one browser (8 and 9 where run.keys: Chromium's)."""
+    """Steps 1-11 of the docstring in one browser (the keys of 9 where run.keys: Chromium's)."""
     # 1. Open: the starting point of make student PART=1.
     s = open_editor(run, 120)
     if s["editor"] != "ready":
@@ -368,37 +372,17 @@ def steps(run, args, start_text, started, expect):
     run.shot("8-reloaded")
     print(f"8. reloaded: the work is kept ({s['status']})", flush=True)
 
-    if not run.keys:
-        return
-    # 9. The stage's own page with ?edit=1.
+    # 9. The stage's own page with ?edit=1 (its keys where run.keys: Chromium's).
     run.open(f"web/{args.stage}/index.html?edit=1&size=640x360")
     status = "document.querySelector('.t10-editor-status') ? document.querySelector('.t10-editor-status').textContent : ''"
     cm = "document.querySelector('.CodeMirror').CodeMirror"
     text = cdp.wait_until(lambda: run.js(status), lambda v: v and "Loading" not in v and "Compiling" not in v, 60,
                           "the stage page's editor did not open", lambda v: f": {v!r}")
     expect(run.js(f"{cm}.getValue()") == broken_text, "the stage page's editor does not open with the kept work")
-    run.js(f"{cm}.focus(); {cm}.setCursor({{line: 0, ch: 0}})")
-    press(run.browser, run.session, "w")
-    typed = run.js(f"{cm}.getValue()")
-    press(run.browser, run.session, "Backspace")
-    erased = run.js(f"{cm}.getValue()")
-    expect(typed == "w" + broken_text and erased == broken_text,
-           f"typing in the stage page's editor: W gave {typed[:12]!r}, Backspace {erased[:12]!r}")
-    in_text = "!!document.activeElement.closest('.CodeMirror')"
-    press(run.browser, run.session, "Tab")
-    indented = run.js(f"{cm}.getValue()")
-    expect(indented == "    " + broken_text and run.js(in_text) is True,
-           f"Tab in the stage page's text gave {indented[:12]!r} with the focus on "
-           f"{run.js('document.activeElement.className')!r}: it must indent and stay")
-    press(run.browser, run.session, "Escape")
-    press(run.browser, run.session, "Tab")
-    focused = run.js("document.activeElement.className")
-    expect("t10-editor-apply" in focused, f"Escape, then Tab, from the stage page's text reaches {focused!r}, not Apply")
-    run.js(f"{cm}.undo()")
-    expect(run.js(f"{cm}.getValue()") == broken_text, "Ctrl+Z's undo did not take the indent back")
-    help_text = run.js("(document.querySelector('.t10-editor-intro') || {}).textContent || ''")
-    expect("Escape, then Tab" in help_text, f"the stage page's editor's help says {help_text!r}")
-    print(f"9. the stage page with ?edit=1: {text}; typing, Tab (indents) and Escape-Tab (leaves) work", flush=True)
+    if run.keys:
+        stage_page_keys(run, cm, broken_text, expect)
+    print(f"9. the stage page with ?edit=1: {text}" + ("; typing, Tab (indents) and Escape-Tab (leaves) work" if run.keys else ""),
+          flush=True)
 
     # 10. The stage page's WebGL context lost: said, and the editor's Apply refused at once.
     run.js(f"{cm}.setValue({cm}.getValue() + '\\n')")
@@ -438,13 +422,38 @@ def steps(run, args, start_text, started, expect):
     print(f"11. the embed's context lost: {e['note'][:90]}...; run again: rendered", flush=True)
 
 
+def stage_page_keys(run, cm, broken_text, expect):
+    """Step 9's keys on the stage page's editor: typing, Backspace, Tab and Escape-Tab."""
+    run.js(f"{cm}.focus(); {cm}.setCursor({{line: 0, ch: 0}})")
+    press(run.browser, run.session, "w")
+    typed = run.js(f"{cm}.getValue()")
+    press(run.browser, run.session, "Backspace")
+    erased = run.js(f"{cm}.getValue()")
+    expect(typed == "w" + broken_text and erased == broken_text,
+           f"typing in the stage page's editor: W gave {typed[:12]!r}, Backspace {erased[:12]!r}")
+    in_text = "!!document.activeElement.closest('.CodeMirror')"
+    press(run.browser, run.session, "Tab")
+    indented = run.js(f"{cm}.getValue()")
+    expect(indented == "    " + broken_text and run.js(in_text) is True,
+           f"Tab in the stage page's text gave {indented[:12]!r} with the focus on "
+           f"{run.js('document.activeElement.className')!r}: it must indent and stay")
+    press(run.browser, run.session, "Escape")
+    press(run.browser, run.session, "Tab")
+    focused = run.js("document.activeElement.className")
+    expect("t10-editor-apply" in focused, f"Escape, then Tab, from the stage page's text reaches {focused!r}, not Apply")
+    run.js(f"{cm}.undo()")
+    expect(run.js(f"{cm}.getValue()") == broken_text, "Ctrl+Z's undo did not take the indent back")
+    help_text = run.js("(document.querySelector('.t10-editor-intro') || {}).textContent || ''")
+    expect("Escape, then Tab" in help_text, f"the stage page's editor's help says {help_text!r}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--site", required=True)
     ap.add_argument("--page", default="tutorial10.html")
     ap.add_argument("--stage", default="tutorial10_part1_tonemap")
     ap.add_argument("--chromium", default="chromium")
-    ap.add_argument("--firefox", help="run in this Firefox ESR (under its own Xvfb) instead: steps 1-8, without axe")
+    ap.add_argument("--firefox", help="run in this Firefox ESR (under its own Xvfb) instead: steps 1-11 but the keys of 9, without axe")
     ap.add_argument("--out", required=True)
     ap.add_argument("--need-embeds", action="store_true", help="fail (not skip) when the site has no web stage")
     ap.add_argument("--axe", help="axe.min.js: check the page with the editor open too")
