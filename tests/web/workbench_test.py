@@ -20,9 +20,11 @@ Chromium, and judged by the project's imgcompare against tests/golden/STAGE.png 
      Module.t10Check() scores 100 with every check of t10-grade's camera cases (pot, npot) passed.
 The first case also sends what must be refused, each with a clear message and the page still drawing:
 a file the stage does not have, a source over the translator's bound, bytes that are not UTF-8, a
-string with a lone surrogate, a source that is not text, loops the page cannot bound (a `while (true)`
-and two nested loops of 100 inside main(): refused by t10SetShader itself at their lines, so no caller
-can hang the tab; a page without the refusal compiles them and hangs or answers ok, and fails here), and
+string with a lone surrogate, a source that is not text, loops the page cannot bound (a `while (true)`,
+a while loop ANGLE compiles that never ends, and two nested loops of 100 inside main(): refused by
+t10SetShader itself at their lines, so no caller can hang the tab; a page without the refusal answers
+ANGLE's "Infinite loop detected", hangs on the second (measured: no reply within 60 s) or answers ok
+on the third, and fails here), and
 a program that compiles but does not link (the previous file is put back and the stage rebuilt with it).
 After the cases, the last page's WebGL context is lost (WEBGL_lose_context.loseContext(), as when the
 browser's GPU watchdog stops a shader): the page must go to "error" with dataset.t10Lost "lost" and its
@@ -142,6 +144,13 @@ def check_loops(page, source):
     first = expect_error(set_shader(page, EDITED, "\n".join(spin)), body + 1, "while (true) in main()")
     if "while loop" not in first["message"] or "1024" not in first["message"]:
         raise Failure(f"the refusal of while (true) does not say why and how to write it: {first['message']!r}")
+    # ANGLE refuses an empty while (true) itself ("Infinite loop detected"); this one it compiles, and
+    # without the page's refusal the draw never ends: the tab hangs (measured on SwiftShader: no reply
+    # within 60 s, no context lost).
+    sly = lines[:body] + ["    float t10X = gl_FragCoord.x; while (t10X >= 0.0) { t10X += 1.0; } if (t10X < 0.0) discard;"] + lines[body:]
+    first = expect_error(set_shader(page, EDITED, "\n".join(sly)), body + 1, "a while loop that never ends in main()")
+    if "while loop" not in first["message"]:
+        raise Failure(f"the refusal of a while loop that never ends does not say why: {first['message']!r}")
     nested = lines[:body] + ["    for (int i = 0; i < 100; ++i)", "        for (int j = 0; j < 100; ++j) { }"] + lines[body:]
     first = expect_error(set_shader(page, EDITED, "\n".join(nested)), body + 2, "nested loops of 100 x 100 in main()")
     if "10000 times" not in first["message"]:
