@@ -1082,6 +1082,7 @@ private:
     Head head(std::size_t open, std::size_t close) const;
     std::size_t statementEnd(std::size_t i) const;
     bool counterChanged(const std::string& counter, std::size_t from, std::size_t to) const;
+    bool macroSpells(const std::string& macro, const std::string& counter) const;
     void loops();
     void calls();
 
@@ -1089,7 +1090,7 @@ private:
     const std::string& text_;
     const std::vector<Token>& tokens_;
     std::vector<ShaderMessage> found_;
-    std::unordered_set<std::string> macroNames_;
+    std::unordered_map<std::string, std::vector<std::string>> macroWords_; // a #define's name: its body's identifiers
     std::vector<std::pair<std::string, std::vector<Token>>> macroBodies_; // a #define's name, then its words
     std::vector<Function> functions_;                                     // in the order of the source
     std::unordered_map<std::string, std::vector<std::size_t>> byName_;    // overloads share a name
@@ -1113,7 +1114,7 @@ void LoopBounds::macros() {
         auto spelt = [&](std::size_t k) { return std::string_view(text_).substr(words[k].begin, words[k].end - words[k].begin); };
         if (words.size() < 2 || spelt(0) != "define") continue;
         const std::string name(spelt(1));
-        macroNames_.insert(name);
+        std::vector<std::string>& spelling = macroWords_[name]; // every definition of the name together
         // A function-like macro's parameters: `#define F(a, b)` with no space before "(".
         std::unordered_set<std::string_view> parameters;
         std::size_t k = 2;
@@ -1136,6 +1137,8 @@ void LoopBounds::macros() {
             }
         }
         macroBodies_.emplace_back(name, std::vector<Token>(words.begin() + static_cast<std::ptrdiff_t>(std::min(k, words.size())), words.end()));
+        for (const Token& w : macroBodies_.back().second)
+            if (w.kind == Kind::Identifier) spelling.emplace_back(text_.substr(w.begin, w.end - w.begin));
     }
 }
 
@@ -1160,7 +1163,7 @@ void LoopBounds::functions() {
             for (std::size_t k = lastOpen; k < lastClose; ++k) out = out || word(k) == "out" || word(k) == "inout";
             byName_[name].push_back(functions_.size());
             functions_.push_back({name, i, std::min(source_.closing(i), tokens_.size() - 1), out});
-            if (macroNames_.count(name))
+            if (macroWords_.count(name))
                 refuse(tokens_[i].line, "the function " + name + " is named by a macro: the page follows calls to bound " +
                                             "their loops, not macros, so it refuses it, " + kWhy);
         }
@@ -1197,7 +1200,7 @@ LoopBounds::Head LoopBounds::head(std::size_t open, std::size_t close) const {
     if (word(k) != "int") return h;
     take(1);
     const std::string counter(word(k));
-    if (counter.empty()) return h;
+    if (counter.empty() || macroWords_.count(counter)) return h; // a macro could make it another variable
     take(1);
     if (!punct(k, '=')) return h;
     take(1);
@@ -1284,10 +1287,33 @@ std::size_t LoopBounds::statementEnd(std::size_t i) const {
     }
 }
 
-// Whether tokens [from, to] assign, step or pass to an out parameter the counter.
+// Whether the macro's body, or that of a macro it names (and so on), holds the identifier `counter`.
+bool LoopBounds::macroSpells(const std::string& macro, const std::string& counter) const {
+    std::vector<std::string> todo{macro};
+    std::unordered_set<std::string> seen{macro};
+    while (!todo.empty()) {
+        const auto found = macroWords_.find(todo.back());
+        todo.pop_back();
+        if (found == macroWords_.end()) continue;
+        for (const std::string& w : found->second) {
+            if (w == counter) return true;
+            if (macroWords_.count(w) && seen.insert(w).second) todo.push_back(w);
+        }
+    }
+    return false;
+}
+
+// Whether tokens [from, to] assign, step or pass to an out parameter the counter, or use a macro that
+// names it or takes it as an argument (which could do either).
 bool LoopBounds::counterChanged(const std::string& counter, std::size_t from, std::size_t to) const {
     for (std::size_t j = from; j <= to && j < tokens_.size(); ++j) {
         const std::string_view w = word(j);
+        if (!w.empty() && macroWords_.count(std::string(w))) {
+            if (macroSpells(std::string(w), counter)) return true;
+            const std::size_t open = next(j + 1);
+            for (std::size_t a = open, close = punct(open, '(') ? source_.closing(open) : open; a < close && a < tokens_.size(); ++a)
+                if (word(a) == counter) return true;
+        }
         if (!w.empty() && punct(next(j + 1), '(') && byName_.count(std::string(w))) {
             const auto& overloads = byName_.at(std::string(w));
             const bool out = std::any_of(overloads.begin(), overloads.end(), [&](std::size_t f) { return functions_[f].outParameters; });

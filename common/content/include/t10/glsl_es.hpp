@@ -50,9 +50,10 @@ constexpr std::uint64_t kGlslMaxLoopIterations = 1024;
 // every loop is bounded. A shader that never ends stops the browser's GPU process, and the tab with it,
 // so the page's edits (Module.t10SetShader) refuse these before anything compiles them. Bounded is
 // `for (int i = A; i < B; ++i)` with integer literals A and B (any of <, <=, >, >=; ++, --, += C, -= C
-// with C a literal), counting towards B, within int, and `i` not changed in the body (assigned, stepped
-// or passed to an out or inout parameter), at most kGlslMaxLoopIterations times with the loops around
-// it and those of the functions it calls. Refused: while and do loops, other for loops, token pasting
+// with C a literal), counting towards B, within int, and `i` not changed in the body (assigned, stepped,
+// passed to an out or inout parameter or to a macro, named in a macro used there, or a macro itself),
+// at most kGlslMaxLoopIterations times with the loops around it and those of the functions it calls.
+// Refused: while and do loops, other for loops, token pasting
 // (`##` could spell a loop) and macros that could hide a loop or a call (a loop keyword in a macro, a
 // macro naming one of the file's functions or calling its own parameter, a function named by a macro).
 // The course's own stage shaders have no loops. Throws what translateToGlslEs throws for text it cannot
