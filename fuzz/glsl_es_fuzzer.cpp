@@ -1,7 +1,8 @@
 // libFuzzer target: the GLSL 4.30 -> ES 3.00 translator (t10::translateToGlslEs) on arbitrary bytes, as
 // a fragment and as a vertex shader. A translation must start with `#version 300 es` and keep the
 // input's line count (plus the two lines of `#line 2` when #version was the first line); an error must
-// be a t10::Error naming the input (anything else escapes and is a finding). Sanitizers catch the rest.
+// be a t10::Error naming the input (anything else escapes and is a finding). The page's loop refusal
+// (t10::unboundedLoops) on the same bytes. Sanitizers catch the rest.
 #include "t10/error.hpp"
 #include "t10/glsl_es.hpp"
 
@@ -34,11 +35,23 @@ void check(std::string_view source, t10::GlslStage stage) {
     }
 }
 
+// The page's loop refusal (t10::unboundedLoops) reads the same bytes: each refusal on a line the input
+// has (0: the file as a whole), an error naming the input.
+void checkLoops(std::string_view source) {
+    try {
+        for (const t10::ShaderMessage& m : t10::unboundedLoops(source, "fuzz.glsl"))
+            if (m.line < 0 || static_cast<std::size_t>(m.line) > lineBreaks(source) + 1 || m.message.empty()) __builtin_trap();
+    } catch (const t10::Error& error) {
+        if (std::string(error.what()).rfind("fuzz.glsl:", 0) != 0) __builtin_trap();
+    }
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string_view source(reinterpret_cast<const char*>(data), size);
     check(source, t10::GlslStage::Fragment);
     check(source, t10::GlslStage::Vertex);
+    checkLoops(source);
     return 0;
 }

@@ -16,13 +16,22 @@ SwiftShader), driven as a reader drives it (its buttons and its text, through th
   5. a syntax error on a known line of PostProcess.frag: the error is listed at that line of the
      student's source and marked there in the text, nothing is applied, and the last good program keeps
      drawing (the frame is still A, the page not in error);
-  6. a while loop is refused at its line before it reaches the GPU (a shader that could hang the tab);
+  6. a while loop is refused at its line before it reaches the GPU (a shader that could hang the tab:
+     Module.t10SetShader refuses it, and the editor lists and marks it there);
   7. the download is a .zip of part1/PostProcess.frag and part1/PostProcessInit.frag with the editor's
      text, and uploading a file through the upload input puts it into the editor;
   8. after a reload the embed's editor opens with the work as it was left (localStorage);
   9. the stage's own page with ?edit=1 opens the same editor with the same kept work, and keys typed in
      its text reach it (W is typed, Backspace takes it away: emscripten's GLFW cancels Backspace for the
-     whole window, so without edit_page.js's listener nothing is deleted), and Tab moves on to Apply.
+     whole window, so without edit_page.js's listener nothing is deleted); Tab indents there as in the
+     embed (the text gains four spaces, the focus stays: the page's own Tab listener, which keeps Tab from
+     GLFW for the canvas, leaves the editor's Tab to it), and Escape, then Tab, moves on to Apply (no
+     keyboard trap);
+ 10. there, the WebGL context lost (WEBGL_lose_context, as when the browser's GPU watchdog stops a
+     shader): the page's status line (role=status) says WebGL stopped and to reload, and the editor's
+     Apply is answered at once with that message (Module.t10SetShader refuses it; nothing hangs);
+ 11. back on the tutorial page, the embed's context lost: the embed's own status line (role=status)
+     says so and its button offers "Run it live again" (data-state idle), which runs it again.
 With --axe AXE.JS, axe-core (axe_test.py's WCAG 2.1 A and AA rules) runs on the page with the editor open
 and its error listed (step 5), at --width in both schemes: 0 violations.
 Screenshots of the embed at each step go into --out (editor-*.jpg).
@@ -32,7 +41,7 @@ Apply does nothing fails step 3 (A unchanged), one that applies the wrong file o
 step 4, one that applies a file that did not compile (or loses the last good program) fails step 5,
 and a page without the editor fails step 1 (no "Edit the shaders" button).
 
---firefox FIREFOX runs steps 1-8 in Firefox ESR instead, on its own Xvfb display (tools/web/marionette.py;
+--firefox FIREFOX runs steps 1-11 but 9's keys in Firefox ESR instead, on its own Xvfb display (tools/web/marionette.py;
 no keys are typed there and axe is Chromium's), screenshots from the display (editor-firefox-*.png):
 make site-live runs it.
 
@@ -161,6 +170,10 @@ class Run:
             self.browser.send("Emulation.setDeviceMetricsOverride", {"width": self.width, "height": 900, "deviceScaleFactor": 1,
                                                                      "mobile": False}, self.session)
 
+    def shot_page(self, name):
+        """The whole page (a stage page: its canvas, status line and editor) as a JPEG."""
+        cdp.full_page_screenshot(self.browser, self.session, os.path.join(self.out, f"editor-{name}.jpg"), self.width)
+
     def check(self, timeout):
         self.click("t10-editor-check")
         return cdp.wait_until(self.state, lambda s: not s["busy"] and ("Checked" in s["status"] or "failed" in s["status"]),
@@ -201,6 +214,10 @@ class FirefoxRun(Run):
     def js(self, expression, await_promise=False, timeout=60):
         return self.browser.evaluate(expression, timeout)
 
+    def shot_page(self, name):
+        """The top of the page (a stage page: its canvas and status line), as the display shows it."""
+        self.browser.display_screenshot(os.path.join(self.out, f"editor-firefox-{name}.png"), "body")
+
     def shot(self, name):
         """The display shows a window's height: the frame, then the editor's panel from its top."""
         self.browser.display_screenshot(os.path.join(self.out, f"editor-firefox-{name}.png"), f'.live[data-stage="{self.stage}"]')
@@ -224,7 +241,7 @@ def open_editor(run, timeout):
 
 
 def steps(run, args, start_text, started, expect):
-    """Steps 1-9 of the docstring in one browser (8 and 9 where run.keys: Chromium's)."""
+    """Steps 1-11 of the docstring in one browser (the keys of 9 where run.keys: Chromium's)."""
     # 1. Open: the starting point of make student PART=1.
     s = open_editor(run, 120)
     if s["editor"] != "ready":
@@ -315,6 +332,8 @@ def steps(run, args, start_text, started, expect):
     loop = [e for e in s["errors"] if e["file"] == "PostProcessInit.frag"]
     expect(loop and loop[0]["line"] == len(init) - 2 and "while" in loop[0]["text"],
            f"the while loop on line {len(init) - 2} is not refused there: {s['errors']}")
+    expect(s["marked"] >= 1, "the refused loop's line is not marked in the text")
+    run.shot("6-loop")
     run.set_text(reference_init)
     print(f"6. loop refused: {loop[:1]}", flush=True)
 
@@ -353,15 +372,58 @@ def steps(run, args, start_text, started, expect):
     run.shot("8-reloaded")
     print(f"8. reloaded: the work is kept ({s['status']})", flush=True)
 
-    if not run.keys:
-        return
-    # 9. The stage's own page with ?edit=1.
+    # 9. The stage's own page with ?edit=1 (its keys where run.keys: Chromium's).
     run.open(f"web/{args.stage}/index.html?edit=1&size=640x360")
     status = "document.querySelector('.t10-editor-status') ? document.querySelector('.t10-editor-status').textContent : ''"
     cm = "document.querySelector('.CodeMirror').CodeMirror"
     text = cdp.wait_until(lambda: run.js(status), lambda v: v and "Loading" not in v and "Compiling" not in v, 60,
                           "the stage page's editor did not open", lambda v: f": {v!r}")
     expect(run.js(f"{cm}.getValue()") == broken_text, "the stage page's editor does not open with the kept work")
+    if run.keys:
+        stage_page_keys(run, cm, broken_text, expect)
+    print(f"9. the stage page with ?edit=1: {text}" + ("; typing, Tab (indents) and Escape-Tab (leaves) work" if run.keys else ""),
+          flush=True)
+
+    # 10. The stage page's WebGL context lost: said, and the editor's Apply refused at once.
+    run.js(f"{cm}.setValue({cm}.getValue() + '\\n')")
+    lose = "document.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext()"
+    run.js(lose)
+    page_status = "document.getElementById('t10-status').getAttribute('role') + ': ' + document.getElementById('t10-status').textContent"
+    said = cdp.wait_until(lambda: run.js(page_status), lambda v: "WebGL stopped" in v, 20,
+                          "the stage page did not say its WebGL context was lost", lambda v: f": {v!r}")
+    expect(said.startswith("status: ") and "reload" in said, f"the lost context's status line: {said!r}")
+    run.js("document.querySelector('.t10-editor-apply').click()")
+    listed = "[...document.querySelectorAll('.t10-editor-error-link')].map(b => b.textContent).join(' | ')"
+    errors = cdp.wait_until(lambda: run.js(listed), lambda v: "WebGL stopped" in v, 20,
+                            "the editor's Apply after the context was lost was not refused with its message",
+                            lambda v: f": the errors listed are {v!r}")
+    run.shot_page("10-context-lost")
+    print(f"10. the context lost: {said[:90]}...; Apply answered: {errors[:80]}...", flush=True)
+
+    # 11. The embed's context lost: its own status line says so and offers to run it again.
+    run.open(args.page)
+    run.js(HELPERS)
+    run.js(f"window.t10Live.start({json.dumps(args.stage)})")
+    cdp.wait_until(run.state, lambda s: s["state"] == "rendered", 120, "the embed did not run again", lambda s: f": {s}")
+    frame = f"window.__t.live({json.dumps(args.stage)}).querySelector('iframe.live-frame').contentDocument"
+    run.js(f"{frame}.getElementById('canvas').getContext('webgl2').getExtension('WEBGL_lose_context').loseContext()")
+    embed = f"JSON.stringify({{state: window.__t.live({json.dumps(args.stage)}).dataset.state, " \
+            f"note: window.__t.live({json.dumps(args.stage)}).querySelector('.live-note').textContent, " \
+            f"role: window.__t.live({json.dumps(args.stage)}).querySelector('.live-note').getAttribute('role'), " \
+            f"button: window.__t.button({json.dumps(args.stage)}, 'live-start').hidden ? '' : " \
+            f"window.__t.button({json.dumps(args.stage)}, 'live-start').textContent}})"
+    e = cdp.wait_until(lambda: json.loads(run.js(embed)), lambda v: v["state"] != "rendered", 20,
+                       "the embed did not notice its lost context", lambda v: f": {v}")
+    expect(e["state"] == "idle" and e["role"] == "status" and "WebGL stopped" in e["note"] and "Run it live again" in e["button"],
+           f"the embed after its context was lost: {e}")
+    run.click("live-start")
+    cdp.wait_until(run.state, lambda s: s["state"] == "rendered", 120, "\"Run it live again\" did not run the embed again",
+                   lambda s: f": {s}")
+    print(f"11. the embed's context lost: {e['note'][:90]}...; run again: rendered", flush=True)
+
+
+def stage_page_keys(run, cm, broken_text, expect):
+    """Step 9's keys on the stage page's editor: typing, Backspace, Tab and Escape-Tab."""
     run.js(f"{cm}.focus(); {cm}.setCursor({{line: 0, ch: 0}})")
     press(run.browser, run.session, "w")
     typed = run.js(f"{cm}.getValue()")
@@ -369,10 +431,20 @@ def steps(run, args, start_text, started, expect):
     erased = run.js(f"{cm}.getValue()")
     expect(typed == "w" + broken_text and erased == broken_text,
            f"typing in the stage page's editor: W gave {typed[:12]!r}, Backspace {erased[:12]!r}")
+    in_text = "!!document.activeElement.closest('.CodeMirror')"
+    press(run.browser, run.session, "Tab")
+    indented = run.js(f"{cm}.getValue()")
+    expect(indented == "    " + broken_text and run.js(in_text) is True,
+           f"Tab in the stage page's text gave {indented[:12]!r} with the focus on "
+           f"{run.js('document.activeElement.className')!r}: it must indent and stay")
+    press(run.browser, run.session, "Escape")
     press(run.browser, run.session, "Tab")
     focused = run.js("document.activeElement.className")
-    expect("t10-editor-apply" in focused, f"Tab from the stage page's text reaches {focused!r}, not Apply")
-    print(f"9. the stage page with ?edit=1: {text}; typing and Tab work", flush=True)
+    expect("t10-editor-apply" in focused, f"Escape, then Tab, from the stage page's text reaches {focused!r}, not Apply")
+    run.js(f"{cm}.undo()")
+    expect(run.js(f"{cm}.getValue()") == broken_text, "Ctrl+Z's undo did not take the indent back")
+    help_text = run.js("(document.querySelector('.t10-editor-intro') || {}).textContent || ''")
+    expect("Escape, then Tab" in help_text, f"the stage page's editor's help says {help_text!r}")
 
 
 def main():
@@ -381,7 +453,7 @@ def main():
     ap.add_argument("--page", default="tutorial10.html")
     ap.add_argument("--stage", default="tutorial10_part1_tonemap")
     ap.add_argument("--chromium", default="chromium")
-    ap.add_argument("--firefox", help="run in this Firefox ESR (under its own Xvfb) instead: steps 1-8, without axe")
+    ap.add_argument("--firefox", help="run in this Firefox ESR (under its own Xvfb) instead: steps 1-11 but the keys of 9, without axe")
     ap.add_argument("--out", required=True)
     ap.add_argument("--need-embeds", action="store_true", help="fail (not skip) when the site has no web stage")
     ap.add_argument("--axe", help="axe.min.js: check the page with the editor open too")

@@ -20,8 +20,19 @@ Chromium, and judged by the project's imgcompare against tests/golden/STAGE.png 
      Module.t10Check() scores 100 with every check of t10-grade's camera cases (pot, npot) passed.
 The first case also sends what must be refused, each with a clear message and the page still drawing:
 a file the stage does not have, a source over the translator's bound, bytes that are not UTF-8, a
-string with a lone surrogate, a source that is not text, and a program that compiles but does not link
-(the previous file is put back and the stage rebuilt with it).
+string with a lone surrogate, a source that is not text, loops the page cannot bound (a `while (true)`,
+a while loop ANGLE compiles that never ends, and two nested loops of 100 inside main(): refused by
+t10SetShader itself at their lines, so no caller can hang the tab; a page without the refusal answers
+ANGLE's "Infinite loop detected", hangs on the second (measured: no reply within 60 s) or answers ok
+on the third, and fails here), and
+a program that compiles but does not link (the previous file is put back and the stage rebuilt with it).
+After the cases, the last page's WebGL context is lost (WEBGL_lose_context.loseContext(), as when the
+browser's GPU watchdog stops a shader): the page must go to "error" with dataset.t10Lost "lost" and its
+status line (role=status) must say that WebGL stopped and to reload; t10SetShader, t10Check and t10Set
+must answer at once with that message, a wheel notch must draw no frame (the loop stopped), and once the
+context is restored (restoreContext()) the page must say so and its reload button must bring back a
+frame. A page without the handling stays "rendered" or answers a compile error, and fails. Screenshot:
+OUT/STAGE-context-lost.png.
 Exit 0: passed; 1: failed (what and why on stderr); 77: no page or no Chromium, said why.
 """
 import argparse
@@ -112,6 +123,7 @@ def check_refusals(args, page, stage, files):
                          await_promise=True)
     expect_error(lone, 3, "a lone surrogate")
     expect_error(page.evaluate(f"Module.t10SetShader({json.dumps(name)}, 42)", await_promise=True), 0, "a number")
+    check_loops(page, files[EDITED])
     # Compiles, but does not link (an input the vertex shader does not write): the previous file is put
     # back and the stage rebuilt with it, so the page keeps drawing the reference's frame.
     lines = files[EDITED].split("\n")
@@ -122,6 +134,82 @@ def check_refusals(args, page, stage, files):
     if "link" not in first["message"]:
         raise Failure(f"the link error does not say so: {first['message']!r}")
     still_drawing(args, page, stage, "after-refusals")
+
+
+def check_loops(page, source):
+    """Loops the page cannot bound, inside main() where they would run: refused at their lines."""
+    lines = source.split("\n")
+    body = next(i for i, text in enumerate(lines) if text.startswith("void main")) + 1  # main()'s first line, 0-based
+    spin = lines[:body] + ["    while (true) { }"] + lines[body:]
+    first = expect_error(set_shader(page, EDITED, "\n".join(spin)), body + 1, "while (true) in main()")
+    if "while loop" not in first["message"] or "1024" not in first["message"]:
+        raise Failure(f"the refusal of while (true) does not say why and how to write it: {first['message']!r}")
+    # ANGLE refuses an empty while (true) itself ("Infinite loop detected"); this one it compiles, and
+    # without the page's refusal the draw never ends: the tab hangs (measured on SwiftShader: no reply
+    # within 60 s, no context lost).
+    sly = lines[:body] + ["    float t10X = gl_FragCoord.x; while (t10X >= 0.0) { t10X += 1.0; } if (t10X < 0.0) discard;"] + lines[body:]
+    first = expect_error(set_shader(page, EDITED, "\n".join(sly)), body + 1, "a while loop that never ends in main()")
+    if "while loop" not in first["message"]:
+        raise Failure(f"the refusal of a while loop that never ends does not say why: {first['message']!r}")
+    nested = lines[:body] + ["    for (int i = 0; i < 100; ++i)", "        for (int j = 0; j < 100; ++j) { }"] + lines[body:]
+    first = expect_error(set_shader(page, EDITED, "\n".join(nested)), body + 2, "nested loops of 100 x 100 in main()")
+    if "10000 times" not in first["message"]:
+        raise Failure(f"the refusal of nested loops does not count their iterations: {first['message']!r}")
+
+
+LOSE_CONTEXT = """(() => {
+  const gl = document.getElementById('canvas').getContext('webgl2');
+  window.__t10Lose = gl && gl.getExtension('WEBGL_lose_context');
+  if (!window.__t10Lose) return 'no WEBGL_lose_context';
+  window.__t10Lose.loseContext();
+  return '';
+})()"""
+STATUS = "JSON.stringify({text: document.getElementById('t10-status').textContent, " \
+         "role: document.getElementById('t10-status').getAttribute('role'), lost: document.body.dataset.t10Lost || '', " \
+         "reload: !document.getElementById('t10-reload').hidden})"
+
+
+def check_context_loss(args, page, stage, source):
+    """The context lost, then restored, then the page reloaded from its button."""
+    missing = page.evaluate(LOSE_CONTEXT)
+    if missing:
+        raise Failure(f"the context-loss check needs WEBGL_lose_context, which this Chromium lacks ({missing})")
+    state = page.wait(lambda s: s["state"] == "error", "no 'error' after the WebGL context was lost", 20)
+    status = json.loads(page.evaluate(STATUS))
+    print(f"  context lost: {status['text']}", flush=True)
+    if status["role"] != "status" or status["lost"] != "lost" or not status["reload"]:
+        raise Failure(f"after the context was lost the status line is {status}: role=status, dataset.t10Lost "
+                      f"'lost' and a reload button expected")
+    if "WebGL stopped" not in status["text"] or "reload" not in status["text"]:
+        raise Failure(f"the status line does not say what happened and what to do: {status['text']!r}")
+    page.screenshot(os.path.join(args.out, f"{stage}-context-lost.png"))
+    started = time.monotonic()
+    answer = set_shader(page, EDITED, source)
+    report = page.evaluate("Module.t10Check()", await_promise=True)
+    refused = page.evaluate("Module.t10Set('fov', '50')")
+    took = time.monotonic() - started
+    if answer.get("ok") is not False or "WebGL stopped" not in answer["errors"][0]["message"]:
+        raise Failure(f"t10SetShader after the context was lost answered {answer!r}")
+    if "WebGL stopped" not in str(report.get("error")) or "WebGL stopped" not in refused:
+        raise Failure(f"after the context was lost t10Check answered {report!r} and t10Set {refused!r}")
+    if took > 5:
+        raise Failure(f"the refusals after the context was lost took {took:.1f} s (they must answer at once)")
+    page.evaluate("document.getElementById('canvas').dispatchEvent(new WheelEvent('wheel', {deltaY: 100, bubbles: true}))")
+    time.sleep(1)
+    if page.state()["frames"] != state["frames"]:
+        raise Failure(f"a frame was drawn after the context was lost ({state['frames']} -> {page.state()['frames']}): "
+                      "the loop did not stop")
+    print(f"  refused at once ({took:.2f} s): {answer['errors'][0]['message'][:60]}...; the loop stopped", flush=True)
+    page.evaluate("window.__t10Lose.restoreContext()")
+    status = cdp.wait_until(lambda: json.loads(page.evaluate(STATUS)), lambda v: v["lost"] == "restored", 20,
+                            "the page did not notice the context's restoring", lambda v: f": {v}")
+    if "reload" not in status["text"]:
+        raise Failure(f"restored, the status line does not offer the reload: {status['text']!r}")
+    page.evaluate("document.getElementById('t10-reload').click()")
+    state = page.wait(lambda s: s["state"] == "rendered", "no frame after the reload button", args.timeout * 0.3)
+    if page.evaluate("document.body.dataset.t10Lost || ''"):
+        raise Failure(f"the reload button did not bring the frame back: {state['state']!r} {state['error']!r}")
+    print(f"  restored: {status['text'][:70]}...; reloaded: a frame again", flush=True)
 
 
 def run_check(page, stage):
@@ -218,6 +306,11 @@ def main():
                 run_case(args, page, stage, i == 0)
             except Failure as failure:
                 raise Failure(f"{stage}: {failure}{page.problems()}") from None
+        stage = args.case[-1]
+        try:
+            check_context_loss(args, page, stage, repository_shaders(args, stage)[EDITED])
+        except Failure as failure:
+            raise Failure(f"{stage}, the WebGL context lost: {failure}{page.problems()}") from None
     finally:
         page.close()
     print("ok")

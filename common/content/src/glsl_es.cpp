@@ -237,6 +237,13 @@ public:
 
     GlslEsShader run();
 
+    // What unboundedLoops() reads: the text with its comments blanked, its tokens, a directive's words
+    // and the bracket closing tokens()[open].
+    const std::string& prepared() const { return text_; }
+    const std::vector<Token>& tokens() const { return tokens_; }
+    std::vector<Token> words(const Token& directive) const { return lex(directive.begin + 1, directive.end, directive.line); }
+    std::size_t closing(std::size_t open) const { return matching(open); }
+
 private:
     [[noreturn]] void fail(int line, const std::string& message) const {
         throw Error(file_ + ":" + std::to_string(line) + ": " + message);
@@ -1014,6 +1021,427 @@ GlslEsShader Translator::run() {
     return std::move(out_);
 }
 
+// --- Loops a page can bound (unboundedLoops, glsl_es.hpp) -------------------------------------------
+
+constexpr std::uint64_t kSaturated = std::uint64_t{1} << 40; // iteration counts stop growing here
+// The for loops read in one source (each reads its body: quadratic); the course's shaders have none.
+constexpr std::size_t kMaxLoops = 128;
+constexpr std::size_t kMaxListed = 50; // refusals listed, then how many more
+
+std::uint64_t times(std::uint64_t a, std::uint64_t b) {
+    if (a == 0 || b == 0) return 0;
+    return a > kSaturated / b ? kSaturated : std::min(a * b, kSaturated);
+}
+
+std::string countText(std::uint64_t n) { return n >= kSaturated ? "more than " + std::to_string(kSaturated) : std::to_string(n); }
+
+const std::string kWhy = "so that a shader cannot hang the browser";
+
+// The loops of one source, read from the translator's tokens: each for loop's head and body, the
+// functions and the calls between them, the macros. Iterative throughout (hostile input).
+class LoopBounds {
+public:
+    explicit LoopBounds(const Translator& source) : source_(source), text_(source.prepared()), tokens_(source.tokens()) {}
+    std::vector<ShaderMessage> run();
+
+private:
+    struct Function {
+        std::string name;
+        std::size_t open, close; // its body's braces
+        bool outParameters;      // an out or inout parameter: an argument may be changed
+    };
+    struct Call {
+        std::string caller, callee;
+        std::uint64_t around; // the iterations of the caller's loops around the call
+        int line;
+    };
+    struct Head {
+        std::string counter;
+        std::uint64_t count; // kSaturated when the head is not one the page can bound
+    };
+
+    std::string_view word(std::size_t i) const {
+        return i < tokens_.size() && tokens_[i].kind == Kind::Identifier
+                   ? std::string_view(text_).substr(tokens_[i].begin, tokens_[i].end - tokens_[i].begin) : std::string_view();
+    }
+    bool punct(std::size_t i, char c) const {
+        return i < tokens_.size() && tokens_[i].kind == Kind::Punct && text_[tokens_[i].begin] == c;
+    }
+    // tokens_[i] then tokens_[i + 1] with nothing between them ("++", "<=")
+    bool pair(std::size_t i, char a, char b) const {
+        return punct(i, a) && punct(i + 1, b) && tokens_[i].end == tokens_[i + 1].begin;
+    }
+    std::size_t next(std::size_t i) const { // the next token that is not a directive
+        while (i < tokens_.size() && tokens_[i].kind == Kind::Directive) ++i;
+        return i;
+    }
+    void refuse(int line, std::string message) { found_.push_back({line, std::move(message)}); }
+
+    void macros();
+    void functions();
+    Head head(std::size_t open, std::size_t close) const;
+    std::size_t statementEnd(std::size_t i) const;
+    bool counterChanged(const std::string& counter, std::size_t from, std::size_t to) const;
+    bool macroSpells(const std::string& macro, const std::string& counter) const;
+    void loops();
+    void calls();
+
+    const Translator& source_;
+    const std::string& text_;
+    const std::vector<Token>& tokens_;
+    std::vector<ShaderMessage> found_;
+    std::unordered_map<std::string, std::vector<std::string>> macroWords_; // a #define's name: its body's identifiers
+    std::vector<std::pair<std::string, std::vector<Token>>> macroBodies_; // a #define's name, then its words
+    std::vector<Function> functions_;                                     // in the order of the source
+    std::unordered_map<std::string, std::vector<std::size_t>> byName_;    // overloads share a name
+    std::unordered_map<std::string, std::uint64_t> cost_; // per function name: the most iterations for a call of it
+    std::vector<Call> calls_;
+};
+
+// Token pasting could spell a loop; a macro could hold one, or hide a call of a function with loops.
+void LoopBounds::macros() {
+    int line = 1;
+    for (std::size_t i = 0; i + 1 < text_.size(); ++i) {
+        if (text_[i] == '\n') ++line;
+        if (text_[i] == '#' && text_[i + 1] == '#') {
+            refuse(line, "token pasting (##): it could build a loop the page cannot bound, so the page refuses it, " + kWhy);
+            ++i;
+        }
+    }
+    for (const Token& t : tokens_) {
+        if (t.kind != Kind::Directive) continue;
+        std::vector<Token> words = source_.words(t);
+        auto spelt = [&](std::size_t k) { return std::string_view(text_).substr(words[k].begin, words[k].end - words[k].begin); };
+        if (words.size() < 2 || spelt(0) != "define") continue;
+        const std::string name(spelt(1));
+        std::vector<std::string>& spelling = macroWords_[name]; // every definition of the name together
+        // A function-like macro's parameters: `#define F(a, b)` with no space before "(".
+        std::unordered_set<std::string_view> parameters;
+        std::size_t k = 2;
+        if (words.size() > 2 && spelt(2) == "(" && words[2].begin == words[1].end) {
+            for (k = 3; k < words.size() && spelt(k) != ")"; ++k)
+                if (words[k].kind == Kind::Identifier) parameters.insert(spelt(k));
+            ++k;
+        }
+        for (std::size_t j = k; j < words.size(); ++j) {
+            const std::string_view w = spelt(j);
+            if (w == "for" || w == "while" || w == "do") {
+                refuse(t.line, "a loop inside the macro " + name + ": the page cannot bound a loop that a macro spells, " +
+                                   "so it refuses it, " + kWhy);
+                break;
+            }
+            if (parameters.count(w) && j + 1 < words.size() && spelt(j + 1) == "(") {
+                refuse(t.line, "the macro " + name + " calls its parameter " + std::string(w) + ": the page follows calls " +
+                                   "to bound their loops, not macros, so it refuses it, " + kWhy);
+                break;
+            }
+        }
+        macroBodies_.emplace_back(name, std::vector<Token>(words.begin() + static_cast<std::ptrdiff_t>(std::min(k, words.size())), words.end()));
+        for (const Token& w : macroBodies_.back().second)
+            if (w.kind == Kind::Identifier) spelling.emplace_back(text_.substr(w.begin, w.end - w.begin));
+    }
+}
+
+// The functions defined at the top level: `NAME (...) {` with the brace at depth 0.
+void LoopBounds::functions() {
+    int depth = 0;
+    std::vector<std::size_t> parens;
+    std::size_t lastOpen = 0, lastClose = tokens_.size();
+    for (std::size_t i = 0; i < tokens_.size(); ++i) {
+        if (tokens_[i].kind != Kind::Punct) continue;
+        const char c = text_[tokens_[i].begin];
+        if (c == '(') parens.push_back(i);
+        if (c == ')' && !parens.empty()) {
+            lastOpen = parens.back();
+            parens.pop_back();
+            lastClose = i;
+        }
+        if (c == '{' && depth++ == 0 && lastClose < i && next(lastClose + 1) == i && lastOpen > 0 &&
+            !word(lastOpen - 1).empty()) {
+            const std::string name(word(lastOpen - 1));
+            bool out = false;
+            for (std::size_t k = lastOpen; k < lastClose; ++k) out = out || word(k) == "out" || word(k) == "inout";
+            byName_[name].push_back(functions_.size());
+            functions_.push_back({name, i, std::min(source_.closing(i), tokens_.size() - 1), out});
+            if (macroWords_.count(name))
+                refuse(tokens_[i].line, "the function " + name + " is named by a macro: the page follows calls to bound " +
+                                            "their loops, not macros, so it refuses it, " + kWhy);
+        }
+        if (c == '}') --depth;
+    }
+    for (const auto& [macro, body] : macroBodies_) {
+        for (const Token& w : body) {
+            const std::string spelt = text_.substr(w.begin, w.end - w.begin);
+            if (w.kind != Kind::Identifier || !byName_.count(spelt)) continue;
+            refuse(w.line, "the macro " + macro + " names the function " + spelt + ": the page follows calls to bound " +
+                               "their loops, not macros, so it refuses it, " + kWhy);
+            break;
+        }
+    }
+}
+
+// `for (int i = A; i < B; ++i)` read between the head's parentheses; count kSaturated when it is not
+// that shape, or counts away from B, or leaves int on its way.
+LoopBounds::Head LoopBounds::head(std::size_t open, std::size_t close) const {
+    Head h{"", kSaturated};
+    std::size_t k = next(open + 1);
+    auto literal = [&](std::int64_t& value) {
+        const bool negative = punct(k, '-');
+        if (negative) k = next(k + 1);
+        if (k >= tokens_.size() || tokens_[k].kind != Kind::Number) return false;
+        const auto parsed = parseIntLiteral(std::string_view(text_).substr(tokens_[k].begin, tokens_[k].end - tokens_[k].begin));
+        if (!parsed) return false;
+        value = negative ? -static_cast<std::int64_t>(*parsed) : static_cast<std::int64_t>(*parsed);
+        k = next(k + 1);
+        return true;
+    };
+    auto take = [&](std::size_t n) { k = next(k + n); };
+    std::int64_t from = 0, to = 0, step = 0;
+    if (word(k) != "int") return h;
+    take(1);
+    const std::string counter(word(k));
+    if (counter.empty() || macroWords_.count(counter)) return h; // a macro could make it another variable
+    take(1);
+    if (!punct(k, '=')) return h;
+    take(1);
+    if (!literal(from) || !punct(k, ';')) return h;
+    take(1);
+    if (word(k) != counter) return h;
+    take(1);
+    const bool up = punct(k, '<');
+    if (!up && !punct(k, '>')) return h;
+    const bool inclusive = pair(k, up ? '<' : '>', '=');
+    take(inclusive ? 2 : 1);
+    if (!literal(to) || !punct(k, ';')) return h;
+    take(1);
+    if ((pair(k, '+', '+') || pair(k, '-', '-')) && word(k + 2) == counter) {
+        step = punct(k, '+') ? 1 : -1;
+        take(3);
+    } else if (word(k) == counter && (pair(k + 1, '+', '+') || pair(k + 1, '-', '-'))) {
+        step = punct(k + 1, '+') ? 1 : -1;
+        take(3);
+    } else if (word(k) == counter && (pair(k + 1, '+', '=') || pair(k + 1, '-', '='))) {
+        const bool plus = punct(k + 1, '+');
+        take(3);
+        if (punct(k, '-') || !literal(step)) return h;
+        step = plus ? step : -step;
+    } else {
+        return h;
+    }
+    if (k != close || step == 0 || (step > 0) != up) return h;
+    const std::int64_t span = (up ? to - from : from - to) + (inclusive ? 1 : 0);
+    const std::int64_t n = span <= 0 ? 0 : (span + std::abs(step) - 1) / std::abs(step);
+    const std::int64_t last = from + n * step; // the value it leaves with: every value before lies between
+    constexpr std::int64_t kIntMin = -2147483648LL, kIntMax = 2147483647LL;
+    if (from < kIntMin || from > kIntMax || last < kIntMin || last > kIntMax) return h;
+    return {counter, static_cast<std::uint64_t>(n)};
+}
+
+// The last token of the statement starting at token i (a loop's body): a block's "}", a simple
+// statement's ";", or where the if, else, for, while, switch or do that starts there ends. The last
+// token of the source when it is not well formed (a body taken too long only refuses more).
+std::size_t LoopBounds::statementEnd(std::size_t i) const {
+    const std::size_t last = tokens_.size() - 1;
+    std::vector<bool> pending; // open if (true: an else may follow) and do (false: `while (...);` follows)
+    for (;;) {
+        i = next(i);
+        if (i >= tokens_.size()) return last;
+        const std::string_view w = word(i);
+        std::size_t end = i;
+        if (punct(i, '{')) {
+            end = source_.closing(i);
+        } else if (w == "for" || w == "while" || w == "switch" || w == "if") {
+            const std::size_t open = next(i + 1);
+            if (!punct(open, '(')) return last;
+            if (w == "if") pending.push_back(true);
+            i = source_.closing(open) + 1;
+            continue;
+        } else if (w == "do") {
+            pending.push_back(false);
+            ++i;
+            continue;
+        } else {
+            while (end < tokens_.size() && !punct(end, ';')) {
+                if (punct(end, '(') || punct(end, '[') || punct(end, '{')) end = source_.closing(end);
+                else if (punct(end, ')') || punct(end, ']') || punct(end, '}')) return last;
+                ++end;
+            }
+        }
+        if (end >= tokens_.size()) return last;
+        bool elseFollows = false;
+        while (!pending.empty() && !elseFollows) {
+            const std::size_t after = next(end + 1);
+            const bool isIf = pending.back();
+            pending.pop_back();
+            if (isIf) {
+                elseFollows = word(after) == "else";
+                i = after + 1;
+                continue;
+            }
+            const std::size_t open = next(after + 1);
+            if (word(after) != "while" || !punct(open, '(')) return last;
+            end = next(source_.closing(open) + 1);
+            if (!punct(end, ';')) return last;
+        }
+        if (!elseFollows) return end;
+    }
+}
+
+// Whether the macro's body, or that of a macro it names (and so on), holds the identifier `counter`.
+bool LoopBounds::macroSpells(const std::string& macro, const std::string& counter) const {
+    std::vector<std::string> todo{macro};
+    std::unordered_set<std::string> seen{macro};
+    while (!todo.empty()) {
+        const auto found = macroWords_.find(todo.back());
+        todo.pop_back();
+        if (found == macroWords_.end()) continue;
+        for (const std::string& w : found->second) {
+            if (w == counter) return true;
+            if (macroWords_.count(w) && seen.insert(w).second) todo.push_back(w);
+        }
+    }
+    return false;
+}
+
+// Whether tokens [from, to] assign, step or pass to an out parameter the counter, or use a macro that
+// names it or takes it as an argument (which could do either).
+bool LoopBounds::counterChanged(const std::string& counter, std::size_t from, std::size_t to) const {
+    for (std::size_t j = from; j <= to && j < tokens_.size(); ++j) {
+        const std::string_view w = word(j);
+        if (!w.empty() && macroWords_.count(std::string(w))) {
+            if (macroSpells(std::string(w), counter)) return true;
+            const std::size_t open = next(j + 1);
+            for (std::size_t a = open, close = punct(open, '(') ? source_.closing(open) : open; a < close && a < tokens_.size(); ++a)
+                if (word(a) == counter) return true;
+        }
+        if (!w.empty() && punct(next(j + 1), '(') && byName_.count(std::string(w))) {
+            const auto& overloads = byName_.at(std::string(w));
+            const bool out = std::any_of(overloads.begin(), overloads.end(), [&](std::size_t f) { return functions_[f].outParameters; });
+            const std::size_t open = next(j + 1), close = source_.closing(open);
+            for (std::size_t a = open; out && a < close && a < tokens_.size(); ++a)
+                if (word(a) == counter) return true;
+        }
+        if (w != counter) continue;
+        if (j >= 2 && (pair(j - 2, '+', '+') || pair(j - 2, '-', '-'))) return true;
+        if (pair(j + 1, '+', '+') || pair(j + 1, '-', '-')) return true;
+        if (punct(j + 1, '=') && !pair(j + 1, '=', '=')) return true;
+        for (char op : {'+', '-', '*', '/', '%', '&', '|', '^'})
+            if (pair(j + 1, op, '=')) return true;
+        if ((pair(j + 1, '<', '<') && pair(j + 2, '<', '=')) || (pair(j + 1, '>', '>') && pair(j + 2, '>', '='))) return true;
+    }
+    return false;
+}
+
+// Every loop on its line, its iterations multiplied by the bounded loops around it; the calls of the
+// file's functions with the iterations around them.
+void LoopBounds::loops() {
+    struct Open {
+        std::size_t end;
+        std::uint64_t total; // its iterations times those of the loops around it
+    };
+    std::vector<Open> around;
+    std::size_t f = 0, read = 0; // the function whose body may hold token i; the for loops read
+    for (std::size_t i = 0; i < tokens_.size(); ++i) {
+        while (!around.empty() && i > around.back().end) around.pop_back();
+        while (f < functions_.size() && functions_[f].close < i) ++f;
+        const bool inFunction = f < functions_.size() && functions_[f].open < i;
+        const std::uint64_t outer = around.empty() ? 1 : around.back().total;
+        const std::string_view w = word(i);
+        if (w == "while" || w == "do") {
+            refuse(tokens_[i].line, "a " + std::string(w) + " loop: the page runs only for loops with a fixed count " +
+                                        "(for (int i = 0; i < N; ++i), N at most " + std::to_string(kGlslMaxLoopIterations) +
+                                        "), " + kWhy);
+        } else if (w == "for" && ++read > kMaxLoops) {
+            refuse(tokens_[i].line, "more than " + std::to_string(kMaxLoops) + " for loops: the page bounds the loops of a " +
+                                        "shader with at most " + std::to_string(kMaxLoops) + ", " + kWhy);
+        } else if (w == "for") {
+            const std::size_t open = next(i + 1);
+            const std::size_t close = punct(open, '(') ? source_.closing(open) : tokens_.size();
+            const Head h = close < tokens_.size() ? head(open, close) : Head{"", kSaturated};
+            if (h.count > kGlslMaxLoopIterations) {
+                refuse(tokens_[i].line, "a for loop whose count the page cannot bound: write it as for (int i = 0; i < N; ++i) "
+                                        "with a number N of at most " + std::to_string(kGlslMaxLoopIterations) + ", " + kWhy);
+                continue;
+            }
+            const std::size_t end = statementEnd(close + 1);
+            if (counterChanged(h.counter, close + 1, end)) {
+                refuse(tokens_[i].line, "a for loop whose counter " + h.counter + " is changed inside it: the page cannot " +
+                                            "bound its count, so it refuses it, " + kWhy);
+                continue;
+            }
+            const std::uint64_t total = times(outer, h.count);
+            if (total > kGlslMaxLoopIterations)
+                refuse(tokens_[i].line, "nested loops that run " + countText(total) + " times for a pixel: the page runs at most " +
+                                            std::to_string(kGlslMaxLoopIterations) + ", " + kWhy);
+            if (inFunction) {
+                std::uint64_t& cost = cost_.try_emplace(functions_[f].name, 1).first->second;
+                cost = std::max(cost, total);
+            }
+            around.push_back({end, total});
+        } else if (!w.empty() && inFunction && byName_.count(std::string(w)) && punct(next(i + 1), '(')) {
+            calls_.push_back({functions_[f].name, std::string(w), outer, tokens_[i].line});
+        }
+    }
+}
+
+// Each function's iterations with those of the functions it calls, by name (overloads together: a
+// walk without recursion; a cycle, which GLSL forbids, saturates), then each call inside loops checked.
+void LoopBounds::calls() {
+    std::unordered_map<std::string, std::vector<std::pair<std::string, std::uint64_t>>> edges; // callee, around
+    for (const Call& c : calls_) edges[c.caller].emplace_back(c.callee, c.around);
+    enum class State { Busy, Done };
+    std::unordered_map<std::string, State> state;
+    std::vector<std::pair<std::string, std::size_t>> stack; // function, its next call
+    for (const auto& [root, ignored] : byName_) {
+        if (state.count(root)) continue;
+        stack.emplace_back(root, 0);
+        state[root] = State::Busy;
+        while (!stack.empty()) {
+            const std::string f = stack.back().first;
+            const std::size_t e = stack.back().second;
+            const auto& out = edges[f];
+            std::uint64_t& cost = cost_.try_emplace(f, 1).first->second;
+            if (e == out.size()) {
+                state[f] = State::Done;
+                stack.pop_back();
+                continue;
+            }
+            const auto& [g, around] = out[e];
+            if (!state.count(g)) {
+                state[g] = State::Busy;
+                stack.emplace_back(g, 0);
+                continue;
+            }
+            cost = std::max(cost, state[g] == State::Busy ? kSaturated : times(around, cost_.try_emplace(g, 1).first->second));
+            ++stack.back().second;
+        }
+    }
+    for (const Call& c : calls_) {
+        const std::uint64_t callee = cost_.try_emplace(c.callee, 1).first->second;
+        const std::uint64_t total = times(c.around, callee);
+        if (c.around > 1 && callee > 1 && total > kGlslMaxLoopIterations)
+            refuse(c.line, "a call of " + c.callee + ", whose loops run " + countText(callee) + " times, inside loops that run " +
+                               countText(c.around) + " times: " + countText(total) + " times for a pixel; the page runs at most " +
+                               std::to_string(kGlslMaxLoopIterations) + ", " + kWhy);
+    }
+}
+
+std::vector<ShaderMessage> LoopBounds::run() {
+    if (tokens_.empty()) return {};
+    macros();
+    functions();
+    loops();
+    calls();
+    std::stable_sort(found_.begin(), found_.end(), [](const ShaderMessage& a, const ShaderMessage& b) { return a.line < b.line; });
+    if (found_.size() > kMaxListed) { // a list a reader can take in; fixing these shows the next
+        const std::size_t more = found_.size() - kMaxListed;
+        found_.resize(kMaxListed);
+        found_.push_back({0, std::to_string(more) + " more loops or macros are refused as well (the first " +
+                                 std::to_string(kMaxListed) + " are listed)"});
+    }
+    return found_;
+}
+
 } // namespace
 
 GlslEsShader translateToGlslEs(std::string_view source, const std::string& fileName, GlslStage stage) {
@@ -1023,6 +1451,11 @@ GlslEsShader translateToGlslEs(std::string_view source, const std::string& fileN
         throw Error(fileName + ": only vertex and fragment shaders can be translated to GLSL ES 3.00 (WebGL2 has no "
                                "geometry or tessellation stages)");
     return Translator(source, fileName, stage).run();
+}
+
+std::vector<ShaderMessage> unboundedLoops(std::string_view source, const std::string& fileName) {
+    const Translator translator(source, fileName, GlslStage::Fragment);
+    return LoopBounds(translator).run();
 }
 
 } // namespace t10

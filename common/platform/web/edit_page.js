@@ -8,14 +8,17 @@
   var box = document.createElement("section");
   box.id = "t10-editor";
   box.setAttribute("aria-label", "Shader editor");
-  var canvas = document.getElementById("canvas");
-  canvas.parentNode.insertBefore(box, canvas.nextSibling);
+  // Under the canvas and its status line (and the reload button a lost WebGL context shows), so that
+  // what the page says stays next to its frame.
+  var above = document.getElementById("t10-reload") || document.getElementById("canvas");
+  above.parentNode.insertBefore(box, above.nextSibling);
   // emscripten's GLFW listens to the window's keys in the capturing phase (the camera's W A S D ...) and
   // cancels Backspace and Tab there, which CodeMirror then ignores: Backspace would do nothing in the
   // text. Registered before GLFW's (this file runs before the stage's main), this listener keeps the
   // editor's keys from GLFW and hands those of the text to CodeMirror itself (its own listener, on the
-  // text, is not reached after stopImmediatePropagation). Tab never gets here: the page's own listener
-  // takes it first, so on this page Tab always moves on (Ctrl+] and Ctrl+[ indent).
+  // text, is not reached after stopImmediatePropagation). Tab too (the page's own listener leaves Tab in
+  // the editor to this one): in the text it indents, and Escape, then Tab, moves on, as in the site's
+  // embeds (editor.js; no keyboard trap); on the editor's buttons it moves on.
   ["keydown", "keypress", "keyup"].forEach(function (type) {
     var trigger = { keydown: "triggerOnKeyDown", keypress: "triggerOnKeyPress", keyup: "triggerOnKeyUp" }[type];
     window.addEventListener(type, function (event) {
@@ -34,7 +37,7 @@
     script.onload = function () {
       window.T10Editor.create({
         container: box, module: function () { return window.Module; }, stageBase: "./",
-        codemirror: "../editor/codemirror/", css: "../editor/editor.css", tabIndents: false,
+        codemirror: "../editor/codemirror/", css: "../editor/editor.css",
         frames: function () { return Number(document.body.dataset.t10Frames || 0); }
       }).catch(function (error) { console.warn("t10 editor: " + error.message); });
     };

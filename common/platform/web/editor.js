@@ -4,7 +4,9 @@
 // build: cmake/T10Web.cmake, tools/build_site) and on the page's contract:
 //   Module.t10Shaders()               -> [{file, source}]  the stage's shaders (the reference's at load)
 //   Module.t10SetShader(file, source) -> Promise of {ok, errors: [{line, message}]}; the frame is redrawn
-//                                        when ok, and the last good program keeps drawing when not
+//                                        when ok, and the last good program keeps drawing when not (loops
+//                                        the page cannot bound are refused there, at their lines, for
+//                                        every caller: t10::unboundedLoops in common/content glsl_es.cpp)
 //   Module.t10Check()                 -> Promise of a report shaped like t10-grade's report.json (optional)
 // The work starts where `make student PART=N` starts it (edit.json and start/ beside the stage's page:
 // the shaders of the part before), is kept per part in localStorage, and downloads as the files of
@@ -15,8 +17,6 @@
   "use strict";
 
   var STORE = "t10-editor:v1:";
-  // Loops a page cannot bound could hang the GPU (and with it the tab): refused before compiling.
-  var MAX_LOOP = 1024;
 
   function element(tag, attributes, text) {
     var node = document.createElement(tag);
@@ -58,101 +58,6 @@
       if (!response.ok) throw new Error(url + ": " + response.status + " " + response.statusText);
       return response.text();
     });
-  }
-
-  // --- Loops a page can bound ------------------------------------------------------------------
-
-  // The source without comments, line breaks kept (so that positions keep their line numbers).
-  function withoutComments(source) {
-    return source.replace(/\/\*[\s\S]*?\*\/|\/\/[^\n]*/g, function (c) { return c.replace(/[^\n]/g, " "); });
-  }
-
-  function lineAt(source, index) { return source.slice(0, index).split("\n").length; }
-
-  // The end of the statement that starts at `at` (after a loop's head): its matching "}" for a block,
-  // else its ";" (a nested loop's own body counted in).
-  function statementEnd(text, at) {
-    while (/\s/.test(text.charAt(at))) at++;
-    if (text.charAt(at) === "{") {
-      for (var depth = 0, i = at; i < text.length; i++) {
-        if (text.charAt(i) === "{") depth++;
-        else if (text.charAt(i) === "}" && --depth === 0) return i;
-      }
-      return text.length;
-    }
-    var head = /^(for|while)\s*\(/.exec(text.slice(at));
-    if (head) {
-      for (var open = 0, j = at + head[0].length - 1; j < text.length; j++) {
-        if (text.charAt(j) === "(") open++;
-        else if (text.charAt(j) === ")" && --open === 0) return statementEnd(text, j + 1);
-      }
-      return text.length;
-    }
-    var semicolon = text.indexOf(";", at);
-    return semicolon < 0 ? text.length : semicolon;
-  }
-
-  // [{line, message}] for the loops a page cannot bound: while and do loops, for loops other than
-  // "for (int i = A; i < B; ++i)" with integers A, B (any of <, <=, >, >=, ++/--/+= C) and i not changed
-  // in the body, and loops whose
-  // iterations, nested ones multiplied, come to more than MAX_LOOP for a pixel. The tutorial's shaders
-  // have no loops at all; one that never ends would stop the browser's GPU process (and the tab with it),
-  // so it is refused with its line before it is compiled.
-  function unboundedLoops(source) {
-    var text = withoutComments(source);
-    var found = [], loops = [];
-    var keyword = /\b(while|do|for)\b/g;
-    var match;
-    while ((match = keyword.exec(text))) {
-      var line = lineAt(text, match.index);
-      if (match[1] !== "for") {
-        found.push({ line: line, message: "a " + match[1] + " loop: the page runs only for loops with a fixed count " +
-                     "(for (int i = 0; i < N; ++i), N at most " + MAX_LOOP + "), so that a shader cannot hang the browser" });
-        continue;
-      }
-      var head = /^for\s*\(\s*int\s+(\w+)\s*=\s*(-?\d+)\s*;\s*(\w+)\s*(<=|>=|<|>)\s*(-?\d+)\s*;\s*(?:(\+\+|--)\s*(\w+)|(\w+)\s*(\+\+|--)|(\w+)\s*(\+=|-=)\s*(\d+))\s*\)/
-        .exec(text.slice(match.index));
-      var count = Infinity, name = "";
-      if (head) {
-        name = head[1]; var from = Number(head[2]), to = Number(head[5]), op = head[4];
-        var stepName = head[7] || head[8] || head[10];
-        var step = head[6] || head[9] ? (head[6] || head[9]) === "++" ? 1 : -1
-                 : (head[11] === "+=" ? 1 : -1) * Number(head[12]);
-        var up = op === "<" || op === "<=";
-        var span = up ? to - from + (op === "<=" ? 1 : 0) : from - to + (op === ">=" ? 1 : 0);
-        if (head[3] === name && stepName === name && step !== 0 && (step > 0) === up)
-          count = Math.max(0, Math.ceil(span / Math.abs(step)));
-      }
-      if (count > MAX_LOOP) {
-        found.push({ line: line, message: "a for loop whose count the page cannot bound: write it as " +
-                     "for (int i = 0; i < N; ++i) with a number N of at most " + MAX_LOOP +
-                     ", so that a shader cannot hang the browser" });
-        continue;
-      }
-      var bodyStart = match.index + head[0].length, bodyEnd = statementEnd(text, bodyStart);
-      var changed = new RegExp("(\\+\\+|--)\\s*" + name + "\\b|\\b" + name + "\\s*(\\+\\+|--|[-+*/%&|^]?=(?!=))");
-      if (changed.test(text.slice(bodyStart, bodyEnd + 1))) {
-        found.push({ line: line, message: "a for loop whose counter " + name + " is changed inside it: the page cannot " +
-                     "bound its count, so it refuses it, so that a shader cannot hang the browser" });
-        continue;
-      }
-      loops.push({ line: line, count: count, start: match.index, end: bodyEnd });
-    }
-    // The preprocessor's token pasting could spell a loop this check does not see (wh ## ile).
-    var pasting = /##/g;
-    while ((match = pasting.exec(text)))
-      found.push({ line: lineAt(text, match.index), message: "token pasting (##): it could build a loop the page cannot " +
-                   "bound, so the page refuses it, so that a shader cannot hang the browser" });
-    // Nested loops multiply: each loop's iterations times those of the loops around it.
-    loops.forEach(function (loop) {
-      var total = loops.reduce(function (n, outer) {
-        return outer.start <= loop.start && loop.end <= outer.end ? n * outer.count : n;
-      }, 1);
-      if (total > MAX_LOOP)
-        found.push({ line: loop.line, message: "nested loops that run " + total + " times for a pixel: the page runs at most " +
-                     MAX_LOOP + ", so that a shader cannot hang the browser" });
-    });
-    return found;
   }
 
   // --- Zip files (stored, no compression: shaders are small) --------------------------------------
@@ -318,8 +223,7 @@
   // options: container (the element to build into), module (a function returning the page's Module),
   // stage, title (the part in words), stageBase (the URL of the stage's folder: edit.json, start/),
   // codemirror (the URL of CodeMirror's files), css (the URL of editor.css, or "" when the page has it),
-  // frames (a function: the page's frame count, optional), tabIndents (false where the page keeps Tab for
-  // moving on: the stage page), stepLink (a function: the href of a tutorial step, optional). Returns a
+  // frames (a function: the page's frame count, optional), stepLink (a function: the href of a tutorial step, optional). Returns a
   // Promise of the editor.
   function create(options) {
     var container = options.container;
@@ -392,8 +296,7 @@
     var self = this, box = this.options.container, id = "t10-editor-" + this.plan.stage;
     var intro = element("p", { className: "t10-editor-intro", id: id + "-help" },
       "Your " + this.partWords() + " started from " + this.startWords() + ", as make student starts it; it is kept in this browser. " +
-      "Ctrl+Enter applies. " + (this.options.tabIndents === false ? "Tab moves on from the text; Ctrl+] and Ctrl+[ indent."
-                                : "In the text, Tab indents: press Escape, then Tab, to move on."));
+      "Ctrl+Enter applies. In the text, Tab indents: press Escape, then Tab, to move on.");
     box.insertBefore(intro, this.status);
     var tabs = element("div", { className: "t10-editor-files", role: "group", "aria-label": "Shader files" });
     this.fileButtons = this.files.map(function (f, i) {
@@ -543,8 +446,6 @@
         var text = f.doc.getValue();
         var source = /\S/.test(text) ? text : f.reference;
         self.clearMarks(f);
-        var refused = source === f.reference ? [] : unboundedLoops(source);
-        if (refused.length) { f.errors = refused; failed.push(f); return; }
         if (source === f.applied) { f.errors = []; return; }
         return Promise.resolve(module.t10SetShader(f.file, source)).then(function (result) {
           if (typeof result === "string") result = JSON.parse(result);
@@ -560,7 +461,10 @@
       var frames = self.options.frames ? self.options.frames() : null;
       var drawn = applied.length ? "Applied " + applied.map(function (f) { return f.name; }).join(", ") +
                   (frames ? ": frame " + frames + " drawn" : ": the frame is redrawn") : "";
-      if (failed.length) {
+      if (module && module.t10Lost) {
+        // The page lost its WebGL context (index.html.in): nothing draws until it is reloaded.
+        self.say(module.t10Lost, true);
+      } else if (failed.length) {
         var count = failed.reduce(function (n, f) { return n + f.errors.length; }, 0);
         self.say((drawn ? drawn + ". " : "") + failed.map(function (f) { return f.name; }).join(", ") + ": " + count +
                  " error" + (count === 1 ? "" : "s") + " (listed below); the last program that compiled is still drawing.", true);
@@ -668,5 +572,5 @@
     }).catch(function (error) { self.say("The check failed: " + (error && error.message ? error.message : error), true); });
   };
 
-  window.T10Editor = { create: create, unboundedLoops: unboundedLoops, makeZip: makeZip, readZip: readZip };
+  window.T10Editor = { create: create, makeZip: makeZip, readZip: readZip };
 })();

@@ -10,6 +10,8 @@
 //       (grader/page/page_check.cpp: score, failed_steps, steps[], checks[] with their mistakes and
 //       estimates, not_judged[]: what the page cannot judge), or {error}.
 // Nothing here throws or rejects: a wrong argument is an answer with ok false, like a compile error.
+// After a lost WebGL context (index.html.in: Module.t10Lost says what happened) both answer at once with
+// that message, without touching GL: nothing can be compiled or drawn until the page is reloaded.
 (function () {
   'use strict';
   const maxNameLength = 255;
@@ -60,6 +62,7 @@
   }
 
   function setShader(file, source) {
+    if (Module['t10Lost']) return Promise.resolve(refusal(Module['t10Lost']));
     if (typeof file !== 'string' || file.length === 0 || file.length > maxNameLength) {
       return Promise.resolve(refusal('the file must be one of the names Module.t10Shaders() lists'));
     }
@@ -80,6 +83,7 @@
   // The check runs at once (it renders t10-grade's cases in turn, then puts the page's settings back);
   // the promise settles once the page has drawn its own frame again.
   function check() {
+    if (Module['t10Lost']) return Promise.resolve({error: Module['t10Lost']});
     const framesBefore = Number(document.body.dataset.t10Frames || 0);
     const report = JSON.parse(UTF8ToString(_t10_check()));
     if (report.error) return Promise.resolve(report);

@@ -357,6 +357,14 @@
     var editor = live.querySelector(".live-editor");
     if (editor) editor.hidden = true;
     setState(live, "error", message + " The picture above is the frame the build rendered.");
+    // After a lost WebGL context a fresh page gets a fresh context: offered from the same button.
+    if (page && page.dataset.t10Lost) {
+      var again = live.querySelector(".live-start"), hidden = again.querySelector(".visually-hidden");
+      again.textContent = "Run it live again";
+      if (hidden) again.appendChild(hidden); // the stage's name, which tells the embeds' buttons apart
+      again.hidden = false;
+      live.setAttribute("data-state", "idle");
+    }
     // Without EXT_texture_norm16 (no GL_R16 in this WebGL2) the exercises can still run with step 40's
     // R16F luminance texture: offered, never switched to silently.
     var retry = live.getAttribute("data-retry-args");
@@ -394,6 +402,10 @@
       doc.head.appendChild(style);
       // Escape leaves the frame for the embed's controls (Tab and Shift+Tab leave it too: the page
       // keeps emscripten's GLFW from taking Tab).
+      // A lost WebGL context (the page stopped: index.html.in) is said in the embed's status line.
+      frame.contentWindow.addEventListener("t10contextlost", function () {
+        if (live.getAttribute("data-state") === "rendered") failed(live, frame, "error", pageOf(frame));
+      });
       frame.contentWindow.addEventListener("keydown", function (event) {
         if (event.key !== "Escape") return;
         var next = live.querySelector(".live-controls input, .live-controls select") || live.querySelector(".live-note");

@@ -3,8 +3,10 @@
 //
 // A stage's shader files are those of its folder in the page's file system (T10_STAGE_SHADER_DIR,
 // packaged with the page), which the ShaderManager reads at every GL_Init. An edit is checked before
-// it replaces anything: its size, UTF-8, then the same GLSL ES translation the page makes at load
-// (glsl_es.hpp) and WebGL's compiler on the translation; any error is answered as {line, message} in
+// it replaces anything: its size, UTF-8, its loops (refused at their lines when the page cannot bound
+// them: unboundedLoops, glsl_es.hpp, so that no caller of Module.t10SetShader can hang the tab), then
+// the same GLSL ES translation the page makes at load (glsl_es.hpp) and WebGL's compiler on the
+// translation; any error is answered as {line, message} in
 // the student's file (shader_messages.hpp) and the running programs stay as they are. A source that
 // compiles is written over the file and only the programs that use it are linked again, in place
 // (ShaderManager::relink: the stage keeps its names, textures and other programs; rebuilding the whole
@@ -101,6 +103,8 @@ std::vector<ShaderMessage> precheck(const std::string& file, const std::string& 
     const bool vertex = std::filesystem::path(file).extension() == ".vert";
     GlslEsShader translated;
     try {
+        // Loops the page cannot bound first: a shader that never ends must not reach the GPU at all.
+        if (std::vector<ShaderMessage> loops = unboundedLoops(source, file); !loops.empty()) return loops;
         translated = translateToGlslEs(source, file, vertex ? GlslStage::Vertex : GlslStage::Fragment);
     } catch (const Error& error) {
         return {translatorMessage(error.what(), file, lines)};
