@@ -21,7 +21,8 @@ Commands:
            ends in "error" and shows the message, and draws no frame.
   compare  --stage S --expect pass|fail: S's ?compare=1 page sets dataset.t10Verdict to the expected verdict.
   goldens  --case STAGE GOLDEN REJECTS ...: golden for each case in turn, in one browser (REJECTS: goldens
-           separated by commas, - for none); every case is judged, then the failures are reported.
+           separated by commas, - for none; STAGE?QUERY adds the stage's options, the frame then named
+           STAGE-QUERY); every case is judged, then the failures are reported.
 
 --browser firefox (golden and goldens): Firefox ESR on its own Xvfb display, driven over Marionette
 (tools/web/marionette.py; the same local server), WebGL 2 on Mesa llvmpipe without ANGLE. Headless
@@ -153,15 +154,17 @@ def run_golden(args, page):
 def run_goldens(args, page):
     """Each --case in turn in the one browser; every case is judged, then the failures are reported."""
     failures = []
-    for stage, golden, rejects in args.case:
+    for page_and_query, golden, rejects in args.case:
+        stage, _, query = page_and_query.partition("?")
         case = argparse.Namespace(**vars(args))
-        case.stage, case.golden, case.name = stage, golden, None
+        case.stage, case.golden, case.query = stage, golden, query
+        case.name = f"{stage}-{re.sub('[^a-z0-9]+', '-', query.lower())}" if query else None
         case.reject = [r for r in rejects.split(",") if r and r != "-"]
         try:
             run_golden(case, page)
         except Failure as failure:
-            print(f"FAILED: {stage}: {failure}", flush=True)
-            failures.append(f"{stage}: {failure}")
+            print(f"FAILED: {page_and_query}: {failure}", flush=True)
+            failures.append(f"{page_and_query}: {failure}")
     if failures:
         raise Failure(f"{len(failures)} of {len(args.case)} pages failed:\n  " + "\n  ".join(failures))
 
@@ -236,7 +239,8 @@ def main():
     ap.add_argument("--out", required=True, help="folder for frames, screenshots and the browser's log")
     ap.add_argument("--stage", help="the stage's page (every command but goldens)")
     ap.add_argument("--case", nargs=3, action="append", default=[], metavar=("STAGE", "GOLDEN", "REJECTS"),
-                    help="goldens: STAGE's frame matches GOLDEN and not each of REJECTS (comma-separated, - for none)")
+                    help="goldens: STAGE's frame matches GOLDEN and not each of REJECTS (comma-separated, - for none); "
+                         "STAGE?QUERY loads it with the query's options")
     ap.add_argument("--name", help="file name for the frame (default: the stage)")
     ap.add_argument("--query", default="", help="more query parameters (the stage's options)")
     ap.add_argument("--golden", help="the golden the frame must match (a stage name)")
@@ -273,7 +277,7 @@ def main():
               f"{'chromium' if args.browser == 'chromium' else 'firefox-esr xvfb'})", file=sys.stderr)
         return 77
     os.makedirs(args.out, exist_ok=True)
-    for stage in [args.stage] if args.stage else [case[0] for case in args.case]:
+    for stage in [args.stage] if args.stage else [case[0].partition("?")[0] for case in args.case]:
         page_folder(args, stage)
     if args.browser == "firefox":
         page = FirefoxPage(args)
