@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The shader editor of the tutorial page's Part 1 embed (issue 52), in headless Chromium (WebGL2 on
-SwiftShader), driven as a reader drives it (its buttons and its text, through the DOM):
+SwiftShader, or --renderer llvmpipe), driven as a reader drives it (its buttons and its text, through the DOM):
 
   1. the embed runs, "Edit the shaders" opens the editor, and the work starts where `make student PART=1`
      starts it: PostProcess.frag is Part 0's (web/<stage>/start/), PostProcessInit.frag, new in Part 1,
@@ -453,6 +453,8 @@ def main():
     ap.add_argument("--page", default="tutorial10.html")
     ap.add_argument("--stage", default="tutorial10_part1_tonemap")
     ap.add_argument("--chromium", default="chromium")
+    ap.add_argument("--renderer", choices=sorted(cdp.RENDERERS), default="swiftshader",
+                    help="Chromium's WebGL (make test: llvmpipe, the cheaper one to draw with here)")
     ap.add_argument("--firefox", help="run in this Firefox ESR (under its own Xvfb) instead: steps 1-11 but the keys of 9, without axe")
     ap.add_argument("--out", required=True)
     ap.add_argument("--need-embeds", action="store_true", help="fail (not skip) when the site has no web stage")
@@ -492,7 +494,7 @@ def main():
             steps(run, args, start_text, started, expect)
         return finish(problems, started, "Firefox")
     with cdp.browsing(args.site, args.chromium, os.path.join(args.out, "chromium.log"), started + args.timeout,
-                      gpu_args=cdp.RENDERERS["swiftshader"]) as (browser, base):
+                      gpu_args=cdp.RENDERERS[args.renderer]) as (browser, base):
         _, session = cdp.open_tab(browser, size=(args.width, 900))
         run = Run(browser, session, args.stage, args.out, args.width, base)
         run.open(args.page)

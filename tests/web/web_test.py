@@ -20,8 +20,11 @@ Commands:
            own, so getExtension returns null as in a browser without float render targets) the page
            ends in "error" and shows the message, and draws no frame.
   compare  --stage S --expect pass|fail: S's ?compare=1 page sets dataset.t10Verdict to the expected verdict.
+  compares --verdict STAGE pass|fail ...: compare for each in turn, in one browser; every page is judged,
+           then the failures are reported.
   goldens  --case STAGE GOLDEN REJECTS ...: golden for each case in turn, in one browser (REJECTS: goldens
-           separated by commas, - for none); every case is judged, then the failures are reported.
+           separated by commas, - for none; STAGE?QUERY adds the stage's options, the frame then named
+           STAGE-QUERY); every case is judged, then the failures are reported.
 
 --browser firefox (golden and goldens): Firefox ESR on its own Xvfb display, driven over Marionette
 (tools/web/marionette.py; the same local server), WebGL 2 on Mesa llvmpipe without ANGLE. Headless
@@ -153,15 +156,17 @@ def run_golden(args, page):
 def run_goldens(args, page):
     """Each --case in turn in the one browser; every case is judged, then the failures are reported."""
     failures = []
-    for stage, golden, rejects in args.case:
+    for page_and_query, golden, rejects in args.case:
+        stage, _, query = page_and_query.partition("?")
         case = argparse.Namespace(**vars(args))
-        case.stage, case.golden, case.name = stage, golden, None
+        case.stage, case.golden, case.query = stage, golden, query
+        case.name = f"{stage}-{re.sub('[^a-z0-9]+', '-', query.lower())}" if query else None
         case.reject = [r for r in rejects.split(",") if r and r != "-"]
         try:
             run_golden(case, page)
         except Failure as failure:
-            print(f"FAILED: {stage}: {failure}", flush=True)
-            failures.append(f"{stage}: {failure}")
+            print(f"FAILED: {page_and_query}: {failure}", flush=True)
+            failures.append(f"{page_and_query}: {failure}")
     if failures:
         raise Failure(f"{len(failures)} of {len(args.case)} pages failed:\n  " + "\n  ".join(failures))
 
@@ -229,14 +234,30 @@ def run_compare(args, page):
         raise Failure(f"the verdict is fail, but not from the comparison: {text}")
 
 
+def run_compares(args, page):
+    """Each --verdict in turn in the one browser; every page is judged, then the failures are reported."""
+    failures = []
+    for stage, expect in args.verdict:
+        case = argparse.Namespace(**vars(args))
+        case.stage, case.expect = stage, expect
+        try:
+            run_compare(case, page)
+        except Failure as failure:
+            print(f"FAILED: {stage}: {failure}", flush=True)
+            failures.append(f"{stage}: {failure}")
+    if failures:
+        raise Failure(f"{len(failures)} of {len(args.verdict)} compare pages failed:\n  " + "\n  ".join(failures))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("command", choices=["golden", "goldens", "live", "nofloat", "compare"])
+    ap.add_argument("command", choices=["golden", "goldens", "live", "nofloat", "compare", "compares"])
     ap.add_argument("--web", required=True, help="the built pages (out/web)")
     ap.add_argument("--out", required=True, help="folder for frames, screenshots and the browser's log")
     ap.add_argument("--stage", help="the stage's page (every command but goldens)")
     ap.add_argument("--case", nargs=3, action="append", default=[], metavar=("STAGE", "GOLDEN", "REJECTS"),
-                    help="goldens: STAGE's frame matches GOLDEN and not each of REJECTS (comma-separated, - for none)")
+                    help="goldens: STAGE's frame matches GOLDEN and not each of REJECTS (comma-separated, - for none); "
+                         "STAGE?QUERY loads it with the query's options")
     ap.add_argument("--name", help="file name for the frame (default: the stage)")
     ap.add_argument("--query", default="", help="more query parameters (the stage's options)")
     ap.add_argument("--golden", help="the golden the frame must match (a stage name)")
@@ -244,6 +265,8 @@ def main():
     ap.add_argument("--set", help="NAME=VALUE for Module.t10Set (live)")
     ap.add_argument("--then", help="the golden after --set (live)")
     ap.add_argument("--expect", choices=["pass", "fail"], help="the compare page's verdict (compare)")
+    ap.add_argument("--verdict", nargs=2, action="append", default=[], metavar=("STAGE", "VERDICT"),
+                    help="compares: STAGE's ?compare=1 page must give VERDICT (pass or fail)")
     ap.add_argument("--goldens", default=os.path.join(HERE, "..", "golden"))
     ap.add_argument("--tolerance", default=os.path.join(HERE, "..", "golden", "web.tolerance"))
     ap.add_argument("--imgcompare", help="the project's imgcompare program")
@@ -258,7 +281,9 @@ def main():
         ap.error(f"{args.command} needs --golden and --imgcompare")
     if args.command == "goldens" and not (args.case and args.imgcompare):
         ap.error("goldens needs --case STAGE GOLDEN REJECTS and --imgcompare")
-    if args.command != "goldens" and not args.stage:
+    if args.command == "compares" and not (args.verdict and all(v in ("pass", "fail") for _, v in args.verdict)):
+        ap.error("compares needs --verdict STAGE pass|fail")
+    if args.command not in ("goldens", "compares") and not args.stage:
         ap.error(f"{args.command} needs --stage")
     if args.command == "live" and not (args.set and args.then and "=" in args.set):
         ap.error("live needs --set NAME=VALUE and --then GOLDEN")
@@ -273,7 +298,8 @@ def main():
               f"{'chromium' if args.browser == 'chromium' else 'firefox-esr xvfb'})", file=sys.stderr)
         return 77
     os.makedirs(args.out, exist_ok=True)
-    for stage in [args.stage] if args.stage else [case[0] for case in args.case]:
+    listed = [case[0].partition("?")[0] for case in args.case] + [stage for stage, _ in args.verdict]
+    for stage in [args.stage] if args.stage else listed:
         page_folder(args, stage)
     if args.browser == "firefox":
         page = FirefoxPage(args)
@@ -281,7 +307,7 @@ def main():
         page = Page(args, scripts=(NO_FLOAT_TARGETS,) if args.command == "nofloat" else ())
     try:
         {"golden": run_golden, "goldens": run_goldens, "live": run_live, "nofloat": run_nofloat,
-         "compare": run_compare}[args.command](args, page)
+         "compare": run_compare, "compares": run_compares}[args.command](args, page)
     finally:
         page.close()
     print("ok")
