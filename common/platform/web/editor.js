@@ -457,13 +457,15 @@
     this.busy = chain.then(function () {
       self.busy = null;
       self.applyButton.removeAttribute("aria-disabled");
-      self.showErrors(failed);
+      // A lost context refuses every file with its message, which is no line's fault: said, not marked.
+      var lost = module && module.t10Lost;
+      self.showErrors(lost ? [] : failed);
       var frames = self.options.frames ? self.options.frames() : null;
       var drawn = applied.length ? "Applied " + applied.map(function (f) { return f.name; }).join(", ") +
                   (frames ? ": frame " + frames + " drawn" : ": the frame is redrawn") : "";
-      if (module && module.t10Lost) {
+      if (lost) {
         // The page lost its WebGL context (index.html.in): nothing draws until it is reloaded.
-        self.say(module.t10Lost, true);
+        self.say(lost, true);
       } else if (failed.length) {
         var count = failed.reduce(function (n, f) { return n + f.errors.length; }, 0);
         self.say((drawn ? drawn + ". " : "") + failed.map(function (f) { return f.name; }).join(", ") + ": " + count +
