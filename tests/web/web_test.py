@@ -153,22 +153,31 @@ def run_golden(args, page):
     judge(args, actual, args.golden, args.reject)
 
 
-def run_goldens(args, page):
-    """Each --case in turn in the one browser; every case is judged, then the failures are reported."""
+def judge_each(cases, judge, noun):
+    """judge(case) for each (label, case) in turn in the one browser: every case is judged, then the
+    failures are reported together."""
     failures = []
+    for label, case in cases:
+        try:
+            judge(case)
+        except Failure as failure:
+            print(f"FAILED: {label}: {failure}", flush=True)
+            failures.append(f"{label}: {failure}")
+    if failures:
+        raise Failure(f"{len(failures)} of {len(cases)} {noun} failed:\n  " + "\n  ".join(failures))
+
+
+def run_goldens(args, page):
+    """Each --case in turn in the one browser."""
+    cases = []
     for page_and_query, golden, rejects in args.case:
         stage, _, query = page_and_query.partition("?")
         case = argparse.Namespace(**vars(args))
         case.stage, case.golden, case.query = stage, golden, query
         case.name = f"{stage}-{re.sub('[^a-z0-9]+', '-', query.lower())}" if query else None
         case.reject = [r for r in rejects.split(",") if r and r != "-"]
-        try:
-            run_golden(case, page)
-        except Failure as failure:
-            print(f"FAILED: {page_and_query}: {failure}", flush=True)
-            failures.append(f"{page_and_query}: {failure}")
-    if failures:
-        raise Failure(f"{len(failures)} of {len(args.case)} pages failed:\n  " + "\n  ".join(failures))
+        cases.append((page_and_query, case))
+    judge_each(cases, lambda case: run_golden(case, page), "pages")
 
 
 def run_live(args, page):
@@ -235,18 +244,13 @@ def run_compare(args, page):
 
 
 def run_compares(args, page):
-    """Each --verdict in turn in the one browser; every page is judged, then the failures are reported."""
-    failures = []
+    """Each --verdict in turn in the one browser."""
+    cases = []
     for stage, expect in args.verdict:
         case = argparse.Namespace(**vars(args))
         case.stage, case.expect = stage, expect
-        try:
-            run_compare(case, page)
-        except Failure as failure:
-            print(f"FAILED: {stage}: {failure}", flush=True)
-            failures.append(f"{stage}: {failure}")
-    if failures:
-        raise Failure(f"{len(failures)} of {len(args.verdict)} compare pages failed:\n  " + "\n  ".join(failures))
+        cases.append((stage, case))
+    judge_each(cases, lambda case: run_compare(case, page), "compare pages")
 
 
 def main():
