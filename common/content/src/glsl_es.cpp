@@ -1289,15 +1289,15 @@ std::size_t LoopBounds::statementEnd(std::size_t i) const {
 
 // Whether the macro's body, or that of a macro it names (and so on), holds the identifier `counter`.
 bool LoopBounds::macroSpells(const std::string& macro, const std::string& counter) const {
-    std::vector<std::string> todo{macro};
+    std::vector<std::string> toExpand{macro};
     std::unordered_set<std::string> seen{macro};
-    while (!todo.empty()) {
-        const auto found = macroWords_.find(todo.back());
-        todo.pop_back();
+    while (!toExpand.empty()) {
+        const auto found = macroWords_.find(toExpand.back());
+        toExpand.pop_back();
         if (found == macroWords_.end()) continue;
         for (const std::string& w : found->second) {
             if (w == counter) return true;
-            if (macroWords_.count(w) && seen.insert(w).second) todo.push_back(w);
+            if (macroWords_.count(w) && seen.insert(w).second) toExpand.push_back(w);
         }
     }
     return false;
